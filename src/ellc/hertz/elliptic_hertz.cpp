@@ -1,0 +1,138 @@
+#include "ellc/hertz/elliptic_hertz.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "ellc/hertz/elliptic_integrals.hpp"
+
+namespace ellc {
+
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+
+// Complete integrals of parameter m = e² in the forms the exact solution needs, with the
+// complementary parameter q = 1 − m = k² as input (precise for very elongated contacts):
+//   K = R_F(0, q, 1),  K − E = (m/3) R_D(0, q, 1),  E = K − (m/3) R_D.
+struct CompleteIntegrals {
+  double rf;  // = K(m)
+  double rd;  // R_D(0, q, 1)
+};
+
+CompleteIntegrals complete_integrals(double q) noexcept {
+  return {elliptic::carlson_rf(0.0, q, 1.0), elliptic::carlson_rd(0.0, q, 1.0)};
+}
+
+// B/A as a function of q = (b_c/a_c)²: (E/k² − K)/(K − E) = (3 R_F − R_D) / (q R_D).
+// Written without the cancelling differences, so it is exact as q → 1 (where it equals 1).
+double curvature_ratio_of(double q) noexcept {
+  const auto [rf, rd] = complete_integrals(q);
+  return (3.0 * rf - rd) / (q * rd);
+}
+
+// Solves curvature_ratio_of(q) = ratio (≥ 1) for q in (0, 1]; the ratio falls monotonically in q.
+// Regula falsi (Illinois) on t = ln q, bracketed, started from Hale's q ≈ (A/B)^{4/3}.
+double solve_axis_ratio_sq(double ratio) noexcept {
+  if (ratio <= 1.0) return 1.0;
+  const double target = std::log(ratio);
+  auto residual = [target](double t) { return std::log(curvature_ratio_of(std::exp(t))) - target; };
+
+  double t_high = 0.0;  // q = 1: residual = −target < 0
+  double r_high = -target;
+  double t_low = std::min(-1e-12, -(4.0 / 3.0) * target);  // Hale's guess, usually close
+  double r_low = residual(t_low);
+  while (r_low < 0.0) {  // too round: move towards elongated until bracketed
+    t_high = t_low;
+    r_high = r_low;
+    t_low = 2.0 * t_low - 1.0;
+    r_low = residual(t_low);
+  }
+  int stale_side = 0;
+  for (int iteration = 0; iteration < 200; ++iteration) {
+    const double t = (t_low * r_high - t_high * r_low) / (r_high - r_low);
+    const double r = residual(t);
+    if (r == 0.0 || std::abs(t_high - t_low) < 1e-15 * (1.0 + std::abs(t))) return std::exp(t);
+    if (r > 0.0) {
+      t_low = t;
+      r_low = r;
+      if (stale_side == -1) r_high *= 0.5;
+      stale_side = -1;
+    } else {
+      t_high = t;
+      r_high = r;
+      if (stale_side == 1) r_low *= 0.5;
+      stale_side = 1;
+    }
+    if (std::abs(r) < 1e-16) return std::exp(t);
+  }
+  return std::exp(0.5 * (t_low + t_high));
+}
+
+HertzShape hale_shape(double equivalent_radius, double ratio) noexcept {
+  // Eq. (4) and (7) as corrected in model-notes §1, with B/A ≥ 1.
+  HertzShape shape;
+  shape.equivalent_radius = equivalent_radius;
+  shape.eccentricity_sq = 1.0 - std::pow(1.0 / ratio, 4.0 / 3.0);
+  shape.f1 = 1.0 - std::pow(std::pow(ratio, 0.0602) - 1.0, 1.456);
+  shape.f2 = 1.0 - std::pow(std::pow(ratio, 0.0684) - 1.0, 1.531);
+  return shape;
+}
+
+HertzShape exact_shape(double equivalent_radius, double ratio) noexcept {
+  // With q = k², ρ = B/A: from Johnson's relations and eq. (9), (10) (derivation in docs/model.md)
+  //   f2^{3/2} = 2 K^{3/2} / (π sqrt(2 sqrt(ρ) R_D/3)),   f1² = f2 · 2 k sqrt(ρ) (R_D/3) / K.
+  const double q = solve_axis_ratio_sq(ratio);
+  const auto [rf, rd] = complete_integrals(q);
+  const double sqrt_ratio = std::sqrt(ratio);
+  HertzShape shape;
+  shape.equivalent_radius = equivalent_radius;
+  shape.eccentricity_sq = 1.0 - q;
+  shape.f2 = std::cbrt(std::pow(2.0 * std::pow(rf, 1.5) / (kPi * std::sqrt(2.0 * sqrt_ratio * rd / 3.0)), 2.0));
+  shape.f1 = std::sqrt(shape.f2 * 2.0 * std::sqrt(q) * sqrt_ratio * (rd / 3.0) / rf);
+  return shape;
+}
+
+}  // namespace
+
+RelativeCurvature relative_curvature(PrincipalCurvatures body_i, PrincipalCurvatures body_j, double alpha) noexcept {
+  const double sum = 0.5 * (body_i.kappa_1 + body_i.kappa_2 + body_j.kappa_1 + body_j.kappa_2);
+  const double split_i = body_i.kappa_1 - body_i.kappa_2;
+  const double split_j = body_j.kappa_1 - body_j.kappa_2;
+  // The radicand is |Δ_I e^{2iα} + Δ_J|² ≥ 0 mathematically; clamp rounding below zero.
+  const double radicand = split_i * split_i + split_j * split_j + 2.0 * split_i * split_j * std::cos(2.0 * alpha);
+  const double difference = 0.5 * std::sqrt(std::max(radicand, 0.0));
+  return {0.5 * (sum - difference), 0.5 * (sum + difference)};
+}
+
+HertzShape hertz_shape(RelativeCurvature curvature, HertzMode mode) noexcept {
+  const double equivalent_radius = 0.5 / std::sqrt(curvature.a_sum * curvature.b_sum);
+  const double ratio = std::max(curvature.b_sum / curvature.a_sum, 1.0);
+  return mode == HertzMode::exact ? exact_shape(equivalent_radius, ratio) : hale_shape(equivalent_radius, ratio);
+}
+
+HertzContact hertz_contact(const HertzShape& shape, double effective_modulus, double overlap) noexcept {
+  HertzContact contact;
+  if (!(overlap > 0.0)) return contact;
+  const double radius_sq = shape.contact_radius_sq_per_overlap() * overlap;  // eq. (9)
+  const double radius = std::sqrt(radius_sq);
+  const double axis_stretch = std::sqrt(std::sqrt(1.0 - shape.eccentricity_sq));  // (1 − e²)^{1/4}
+  contact.equivalent_contact_radius = radius;
+  contact.semi_axis_major = radius / axis_stretch;  // eq. (8)
+  contact.semi_axis_minor = radius * axis_stretch;
+  contact.peak_pressure =
+      2.0 * effective_modulus * radius / (kPi * shape.equivalent_radius * shape.f1 * shape.f1 * shape.f1);  // eq. (2)
+  contact.force = (4.0 / 3.0) * effective_modulus * std::sqrt(shape.equivalent_radius) * overlap *
+                  std::sqrt(overlap) / (shape.f2 * std::sqrt(shape.f2));  // eq. (10)
+  return contact;
+}
+
+double hertz_pressure(double semi_axis_major, double semi_axis_minor, double peak_pressure, double x,
+                      double y) noexcept {
+  const double u = x / semi_axis_major;
+  const double v = y / semi_axis_minor;
+  const double inside = 1.0 - u * u - v * v;
+  return inside > 0.0 ? peak_pressure * std::sqrt(inside) : 0.0;  // eq. (1)
+}
+
+}  // namespace ellc

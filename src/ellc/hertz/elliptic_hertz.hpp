@@ -1,0 +1,58 @@
+#pragma once
+// Elliptical Hertz contact (paper Sec. 2, model-notes §1). Two pieces:
+//  * HertzShape: everything fixed by the curvatures alone (R_e, e, f1, f2), computed once per
+//    contact configuration;
+//  * HertzContact: the overlap-dependent quantities (contact semi-axes, p0, force).
+// Hale's fit (eq. 4, 7) and the exact elliptic-integral solution share this interface: the exact
+// mode defines f1, f2 through eq. (9) and (10), so every formula downstream is the same.
+
+namespace ellc {
+
+enum class HertzMode { hale, exact };
+
+// Principal curvatures of one body at the contact point (1/length, convex > 0; a flat wall has 0).
+struct PrincipalCurvatures {
+  double kappa_1 = 0.0;
+  double kappa_2 = 0.0;
+};
+
+// A and B of eq. (5), with B ≥ A (model-notes §1).
+struct RelativeCurvature {
+  double a_sum = 0.0;  // A
+  double b_sum = 0.0;  // B
+};
+
+struct HertzShape {
+  double equivalent_radius = 0.0;  // R_e = 1 / (2 sqrt(A B)), eq. (6)
+  double eccentricity_sq = 0.0;    // e² = 1 − (b_c/a_c)², eq. (7)
+  double f1 = 1.0;                 // correction factors, eq. (4) (Hale) or exact equivalents
+  double f2 = 1.0;
+  // c_c² = R_e δ f1²/f2 (eq. 9), so contact area per unit overlap / π.
+  [[nodiscard]] double contact_radius_sq_per_overlap() const noexcept { return equivalent_radius * f1 * f1 / f2; }
+};
+
+struct HertzContact {
+  double semi_axis_major = 0.0;            // a_c, eq. (8)
+  double semi_axis_minor = 0.0;            // b_c, eq. (8)
+  double equivalent_contact_radius = 0.0;  // c_c = sqrt(a_c b_c), eq. (9)
+  double peak_pressure = 0.0;              // p0, eq. (2)
+  double force = 0.0;                      // F_H, eq. (10)
+};
+
+// Eq. (5): A + B = ½ Σκ, B − A = ½ sqrt(Δ_I² + Δ_J² + 2 Δ_I Δ_J cos 2α), Δ_k = κ1^k − κ2^k.
+// `alpha` is the angle between the κ1 directions of the two bodies.
+[[nodiscard]] RelativeCurvature relative_curvature(PrincipalCurvatures body_i, PrincipalCurvatures body_j,
+                                                   double alpha) noexcept;
+
+// R_e, e², f1, f2 for A ≤ B, A > 0. Hale: eq. (4), (7) with B/A ≥ 1. Exact: solves
+// B/A = (E/k² − K)/(K − E) for k = b_c/a_c (Johnson 1985, Sec. 4.2).
+[[nodiscard]] HertzShape hertz_shape(RelativeCurvature curvature, HertzMode mode) noexcept;
+
+// Contact ellipse, p0 and F_H at overlap δ ≥ 0 for effective modulus E_e.
+[[nodiscard]] HertzContact hertz_contact(const HertzShape& shape, double effective_modulus, double overlap) noexcept;
+
+// p(x, y) of eq. (1) for a contact ellipse with semi-axes a_c (along x), b_c and peak p0.
+[[nodiscard]] double hertz_pressure(double semi_axis_major, double semi_axis_minor, double peak_pressure, double x,
+                                    double y) noexcept;
+
+}  // namespace ellc

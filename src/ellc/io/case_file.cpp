@@ -1,0 +1,137 @@
+#include "ellc/io/case_file.hpp"
+
+#include <cmath>
+#include <numbers>
+
+#include "ellc/geometry/tip_contact.hpp"
+#include "ellc/io/input_error.hpp"
+
+namespace ellc {
+
+Material read_material(TableReader& table) {
+  Material material;
+  material.youngs_modulus = table.number("youngs_modulus");
+  material.poisson_ratio = table.number("poisson_ratio");
+  material.yield_stress = table.number("yield_stress");
+  table.finish();
+  if (const std::string error = validation_error(material, table.path());
+      !error.empty())
+    throw InputError(table.source(), error);
+  return material;
+}
+
+BodySpec read_body(TableReader& table, const std::optional<Material>& default_material,
+                   std::vector<std::string>& warnings) {
+  BodySpec body;
+  const auto semi_axes = table.optional_numbers("semi_axes", 3);
+  const auto aspect = table.optional_numbers("aspect", 3);
+  const auto mean = table.optional_number("mean_radius");
+  if (semi_axes && (aspect || mean))
+    throw InputError(table.source(), "[" + table.path() +
+                                         "] gives both semi_axes and aspect/mean_radius: expected one of the two");
+  if (semi_axes) {
+    for (int axis = 0; axis < 3; ++axis) {
+      if ((*semi_axes)[axis] <= 0.0)
+        table.fail("semi_axes[" + std::to_string(axis) + "]", (*semi_axes)[axis], "a finite number > 0 (µm)");
+      body.semi_axes[axis] = (*semi_axes)[axis];
+    }
+  } else if (aspect) {
+    if (!mean) table.fail("mean_radius", "missing", "a number > 0 (µm), required with aspect");
+    if (*mean <= 0.0) table.fail("mean_radius", *mean, "a finite number > 0 (µm)");
+    for (int axis = 0; axis < 3; ++axis)
+      if ((*aspect)[axis] <= 0.0)
+        table.fail("aspect[" + std::to_string(axis) + "]", (*aspect)[axis], "a finite number > 0");
+    // Scale the aspect so that (abc)^{1/3} = r̂ (eq. 50); aspect[0] need not be exactly 1.
+    const Eigen::Vector3d ratios((*aspect)[0], (*aspect)[1], (*aspect)[2]);
+    body.semi_axes = ratios * (*mean / std::cbrt(ratios.prod()));
+  } else {
+    table.fail("semi_axes", "missing", "semi_axes = [a, b, c] or aspect = [1, b/a, c/a] with mean_radius");
+  }
+  body.twist = table.number_or("twist_deg", 0.0) * std::numbers::pi / 180.0;
+
+  if (auto own = table.optional_table("material")) {
+    body.material = read_material(*own);
+  } else if (default_material) {
+    body.material = *default_material;
+  } else {
+    throw InputError(table.source(), "missing table [material] (or [" + table.field("material") + "])");
+  }
+  table.finish();
+
+  const double b_over_a = body.semi_axes.y() / body.semi_axes.x();
+  const double c_over_a = body.semi_axes.z() / body.semi_axes.x();
+  auto outside = [](double ratio) { return ratio < kCalibratedAspectMin * (1 - 1e-12) || ratio > kCalibratedAspectMax * (1 + 1e-12); };
+  if (outside(b_over_a) || outside(c_over_a))
+    warnings.push_back(table.path() + " has aspect 1:" +
+                       format_number(b_over_a) + ":" + format_number(c_over_a) +
+                       ", outside the calibrated range 1:[0.5..2]:[0.5..2] of the transition fits (eq. 52-53); "
+                       "the law still evaluates");
+  return body;
+}
+
+ModelSpec read_model(TableReader& table) {
+  ModelSpec model;
+  model.hertz = table.choice("hertz", {"hale", "exact"}, "hale") == "exact" ? HertzMode::exact : HertzMode::hale;
+  auto& fit = model.law.fit;
+  fit.lambda_amplitude = table.number_or("m", fit.lambda_amplitude);
+  fit.lambda_rate = table.number_or("o", fit.lambda_rate);
+  fit.lambda_offset = table.number_or("p", fit.lambda_offset);
+  fit.epsilon_amplitude = table.number_or("s", fit.epsilon_amplitude);
+  fit.epsilon_rate = table.number_or("t", fit.epsilon_rate);
+  fit.epsilon_offset = table.number_or("u", fit.epsilon_offset);
+  fit.transition_exponent = table.number_or("n", fit.transition_exponent);
+  model.law.yield_pressure_factor = table.number_or("yield_pressure_factor", model.law.yield_pressure_factor);
+  table.finish();
+  if (const std::string error = validation_error(model.law); !error.empty()) throw InputError(table.source(), error);
+  return model;
+}
+
+namespace {
+
+CurveCase read_case(const toml::table& root_table, const std::string& source) {
+  TableReader root(root_table, "", source);
+  CurveCase result;
+  std::optional<Material> shared_material;
+  if (auto material = root.optional_table("material")) shared_material = read_material(*material);
+  {
+    auto body = root.table("body_I");
+    result.body_i = read_body(body, shared_material, result.warnings);
+  }
+  {
+    auto body = root.table("body_J");
+    result.body_j = read_body(body, shared_material, result.warnings);
+  }
+  {
+    auto protocol = root.table("protocol");
+    const auto absolute = protocol.optional_numbers("waypoints");
+    const auto relative = protocol.optional_numbers("waypoints_relative");
+    if (absolute && relative)
+      throw InputError(source, "[protocol] gives both waypoints and waypoints_relative: expected one of the two");
+    if (!absolute && !relative)
+      protocol.fail("waypoints", "missing", "waypoints = [...] (µm) or waypoints_relative = [...] (fractions of r̂^I + r̂^J)");
+    const double scale = relative ? mean_radius(result.body_i.semi_axes) + mean_radius(result.body_j.semi_axes) : 1.0;
+    const auto& given = absolute ? *absolute : *relative;
+    const char* key = absolute ? "waypoints" : "waypoints_relative";
+    for (std::size_t index = 0; index < given.size(); ++index) {
+      if (given[index] < 0.0)
+        protocol.fail(std::string(key) + "[" + std::to_string(index) + "]", given[index], "a finite number >= 0");
+      result.waypoints.push_back(given[index] * scale);
+    }
+    if (given.size() < 2) protocol.fail(key, "an array of 1 element", "at least two waypoints");
+    result.points_per_segment = protocol.integer_at_least("points_per_segment", 1, 50);
+    protocol.finish();
+  }
+  if (auto model = root.optional_table("model")) result.model = read_model(*model);
+  root.finish();
+  return result;
+}
+
+}  // namespace
+
+CurveCase read_curve_case(const std::string& path) { return read_case(parse_toml_file(path), path); }
+
+CurveCase parse_curve_case(std::string_view toml_text, const std::string& source) {
+  return read_case(parse_toml_text(toml_text, source), source);
+}
+
+}  // namespace ellc

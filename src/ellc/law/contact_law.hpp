@@ -1,0 +1,123 @@
+#pragma once
+// The Becker–Kamlah normal contact law (paper Sec. 3, model-notes §2–4).
+//
+// One pure function of the contact constants, the overlap δ and the history δ_* (the largest
+// overlap the contact has reached). Header-only and noexcept: no allocation, no exceptions,
+// inlined into the DEM loop, LAMMPS and the Python batch calls alike.
+//
+// Regimes on loading (δ ≥ δ_*):  δ ≤ δ_Y Hertz (10);  δ_Y < δ ≤ δ_max eq. (25) with λ of (28);
+// δ > δ_max eq. (31). Below δ_*: elastic unloading/reloading along eq. (49).
+
+#include <cmath>
+#include <cstdint>
+#include <numbers>
+
+#include "ellc/law/contact_constants.hpp"
+
+namespace ellc {
+
+enum class Regime : std::uint8_t { separated, elastic, elastic_plastic, fully_plastic, unloading };
+
+[[nodiscard]] constexpr const char* regime_name(Regime regime) noexcept {
+  switch (regime) {
+    case Regime::separated: return "separated";
+    case Regime::elastic: return "elastic";
+    case Regime::elastic_plastic: return "elastic_plastic";
+    case Regime::fully_plastic: return "fully_plastic";
+    case Regime::unloading: return "unloading";
+  }
+  return "unknown";
+}
+
+struct LawResult {
+  double force = 0.0;        // normal force, ≥ 0
+  double max_overlap = 0.0;  // δ_* after this evaluation (the only history)
+  Regime regime = Regime::separated;
+};
+
+// Derived unloading branch for a history δ_* > δ_Y (model-notes §4).
+struct UnloadingBranch {
+  double loading_force = 0.0;             // F_*,pmax: the loading force at δ_* (eq. 25 or 31)
+  double fully_plastic_force = 0.0;       // F_*,pY = π p_Y (c_*² − c_Y²) + F_pY
+  double hertz_force = 0.0;               // F_*,H = F_H(δ_*)
+  double plastic_radius = 0.0;            // R_e,p = F_*,H R_e / F_*,pY, eq. (44)
+  double plastic_overlap = 0.0;           // δ_p = δ_* (1 − R_e/R_e,p), eq. (34)
+  double force_ratio = 1.0;               // β = F_*,pmax / F_*,pY, eq. (46)
+  double unloading_radius = 0.0;          // R_e,pmax = β² R_e,p, eq. (48)
+  double unloading_coefficient = 0.0;     // (4/3) E_e sqrt(R_e,pmax) f2^{-3/2}, eq. (49)
+};
+
+namespace law_detail {
+inline constexpr double kPi = std::numbers::pi;
+
+[[nodiscard]] inline double pow_three_halves(double x) noexcept { return x * std::sqrt(x); }
+
+// Eq. (24)/(25)/(31): F = π p (c_c² − c_Y²) + F_pY with the pressure p = λ Y.
+[[nodiscard]] inline double truncated_hertz_force(const ContactConstants& c, double pressure,
+                                                  double contact_radius_sq) noexcept {
+  return kPi * pressure * (contact_radius_sq - c.yield_contact_radius * c.yield_contact_radius) + c.yield_force;
+}
+}  // namespace law_detail
+
+// λ of eq. (28) at equivalent contact radius c_c ∈ [c_Y, c_max].
+[[nodiscard]] inline double transition_lambda(const ContactConstants& c, double contact_radius) noexcept {
+  // Fraction of the transition still ahead: 1 at c_Y, 0 at c_max. Clamped because c_c at δ_max
+  // can round to a hair above ε_max c_Y, and a negative base would give pow() a NaN.
+  const double progress_left = (c.epsilon_max * c.yield_contact_radius - contact_radius) /
+                               ((c.epsilon_max - 1.0) * c.yield_contact_radius);
+  return c.lambda_max - (c.lambda_max - c.yield_pressure_factor) *
+                            std::pow(std::fmax(progress_left, 0.0), c.transition_exponent);
+}
+
+// The loading envelope F(δ) for monotonic loading, and the regime it is in.
+struct LoadingPoint {
+  double force;
+  Regime regime;
+};
+[[nodiscard]] inline LoadingPoint loading_force(const ContactConstants& c, double overlap) noexcept {
+  if (overlap <= c.yield_overlap) return {c.hertz_coefficient * law_detail::pow_three_halves(overlap), Regime::elastic};
+  const double contact_radius_sq = c.contact_radius_sq_per_overlap * overlap;  // eq. (9)
+  if (overlap <= c.plastic_limit_overlap) {
+    const double lambda = transition_lambda(c, std::sqrt(contact_radius_sq));
+    return {law_detail::truncated_hertz_force(c, lambda * c.yield_stress, contact_radius_sq),
+            Regime::elastic_plastic};
+  }
+  return {law_detail::truncated_hertz_force(c, c.lambda_max * c.yield_stress, contact_radius_sq),
+          Regime::fully_plastic};
+}
+
+// Unloading branch from history δ_* (> δ_Y). Everything is derived from δ_*, nothing cached.
+[[nodiscard]] inline UnloadingBranch unloading_branch(const ContactConstants& c, double max_overlap) noexcept {
+  UnloadingBranch branch;
+  branch.loading_force = loading_force(c, max_overlap).force;
+  branch.fully_plastic_force =
+      law_detail::truncated_hertz_force(c, c.yield_pressure, c.contact_radius_sq_per_overlap * max_overlap);
+  branch.hertz_force = c.hertz_coefficient * law_detail::pow_three_halves(max_overlap);
+  const double radius_growth = branch.hertz_force / branch.fully_plastic_force;  // R_e,p / R_e
+  branch.plastic_radius = c.equivalent_radius * radius_growth;
+  branch.plastic_overlap = max_overlap * (1.0 - 1.0 / radius_growth);
+  branch.force_ratio = branch.loading_force / branch.fully_plastic_force;
+  branch.unloading_radius = branch.force_ratio * branch.force_ratio * branch.plastic_radius;
+  branch.unloading_coefficient = c.hertz_coefficient * std::sqrt(branch.unloading_radius / c.equivalent_radius);
+  return branch;
+}
+
+// The law. `max_overlap` is δ_* before this step (0 for a fresh contact). The caller stores the
+// returned max_overlap; deleting history on separation is the caller's policy (model-notes §5).
+[[nodiscard]] inline LawResult evaluate_contact(const ContactConstants& c, double overlap,
+                                                double max_overlap) noexcept {
+  if (!(overlap > 0.0)) return {0.0, max_overlap, Regime::separated};
+  if (overlap >= max_overlap) {
+    const LoadingPoint point = loading_force(c, overlap);
+    return {point.force, overlap, point.regime};
+  }
+  if (max_overlap <= c.yield_overlap)  // never yielded: Hertz both ways, δ_p = 0
+    return {c.hertz_coefficient * law_detail::pow_three_halves(overlap), max_overlap, Regime::elastic};
+  const UnloadingBranch branch = unloading_branch(c, max_overlap);
+  const double elastic_overlap = overlap - branch.plastic_overlap;  // δ_UL, eq. (32)
+  if (elastic_overlap <= 0.0) return {0.0, max_overlap, Regime::separated};
+  return {branch.unloading_coefficient * law_detail::pow_three_halves(elastic_overlap), max_overlap,
+          Regime::unloading};
+}
+
+}  // namespace ellc

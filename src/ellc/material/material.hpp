@@ -1,0 +1,31 @@
+#pragma once
+// Material layer: isotropic elastic–ideally-plastic bodies and how two of them mix into the
+// constants a contact sees. Unit-agnostic; docs use µm, MPa, µN.
+
+#include <string>
+
+namespace ellc {
+
+struct Material {
+  double youngs_modulus = 0.0;  // E
+  double poisson_ratio = 0.0;   // ν, in (−1, 0.5)
+  double yield_stress = 0.0;    // Y, in simple tension
+};
+
+// What a contact needs from the two materials.
+struct ContactMaterial {
+  double effective_modulus = 0.0;  // E_e, paper eq. (3)
+  double yield_stress = 0.0;       // Y of the contact: the softer body yields first (model-notes §5)
+};
+
+// Empty when valid; otherwise a sentence naming the field, its value and what was expected.
+// `where` prefixes field names, e.g. "body_I.material".
+[[nodiscard]] std::string validation_error(const Material& material, const std::string& where = "material");
+
+// E_e = [ (1 − ν_I²)/E_I + (1 − ν_J²)/E_J ]⁻¹, paper eq. (3).
+[[nodiscard]] double effective_modulus(const Material& body_i, const Material& body_j) noexcept;
+
+// Y = min(Y_I, Y_J) (model-notes §5) together with E_e.
+[[nodiscard]] ContactMaterial mix(const Material& body_i, const Material& body_j) noexcept;
+
+}  // namespace ellc
