@@ -1,6 +1,6 @@
 #include "ellc/io/input_error.hpp"
 
-#include <cstdio>
+#include <charconv>
 
 namespace ellc {
 
@@ -19,12 +19,8 @@ InputError::InputError(const std::string& source, const std::string& message)
 
 std::string format_number(double value) {
   char buffer[32];
-  for (int precision = 6; precision <= 17; ++precision) {
-    std::snprintf(buffer, sizeof buffer, "%.*g", precision, value);
-    double parsed = 0.0;
-    if (std::sscanf(buffer, "%lf", &parsed) == 1 && parsed == value) break;
-  }
-  return buffer;
+  const auto end = std::to_chars(buffer, buffer + sizeof buffer, value).ptr;  // shortest round-trip form
+  return std::string(buffer, end);
 }
 
 }  // namespace ellc

@@ -2,16 +2,15 @@
 
 #include <algorithm>
 #include <cmath>
-#include <sstream>
+#include <charconv>
 
 namespace ellc {
 
 namespace {
 std::string describe(const std::string& field, double value, const char* expected) {
-  std::ostringstream out;
-  out.precision(17);
-  out << field << " = " << value << ": expected " << expected;
-  return out.str();
+  char number[32];
+  const auto end = std::to_chars(number, number + sizeof number, value).ptr;  // shortest round-trip form
+  return field + " = " + std::string(number, end) + ": expected " + expected;
 }
 }  // namespace
 
