@@ -27,13 +27,6 @@ struct CurveOptions {
   std::string hertz;
 };
 
-ContactConstants tip_constants(const BodySpec& body_i, const BodySpec& body_j, const ModelSpec& model,
-                               const LawParameters& law) {
-  const TipContact tip = tip_contact({body_i.semi_axes, body_i.twist}, {body_j.semi_axes, body_j.twist});
-  return make_contact_constants(mix(body_i.material, body_j.material), tip.body_i, tip.body_j, tip.alpha,
-                                mean_radius(body_i.semi_axes) + mean_radius(body_j.semi_axes), model.hertz, law);
-}
-
 // Spheres of the same volume (radius r̂^k) and material as each ellipsoid: the paper's green curve.
 BodySpec equal_volume_sphere(const BodySpec& body) {
   BodySpec sphere = body;
@@ -109,11 +102,11 @@ void run_curve(const CurveOptions& options) {
   for (const auto& warning : curve_case.warnings) std::fprintf(stderr, "ellc: warning: %s\n", warning.c_str());
 
   const ModelSpec& model = curve_case.model;
-  const ContactConstants constants = tip_constants(curve_case.body_i, curve_case.body_j, model, model.law);
-  const ContactConstants sphere_constants = tip_constants(
-      equal_volume_sphere(curve_case.body_i), equal_volume_sphere(curve_case.body_j), model, model.law);
+  const ContactConstants constants = case_contact_constants(curve_case.body_i, curve_case.body_j, model.hertz, model.law);
+  const ContactConstants sphere_constants = case_contact_constants(
+      equal_volume_sphere(curve_case.body_i), equal_volume_sphere(curve_case.body_j), model.hertz, model.law);
   const ContactConstants efp_constants =
-      tip_constants(curve_case.body_i, curve_case.body_j, model, model.law.elastic_fully_plastic());
+      case_contact_constants(curve_case.body_i, curve_case.body_j, model.hertz, model.law.elastic_fully_plastic());
   check(constants, options.case_path, "the ellipsoid pair");
   check(sphere_constants, options.case_path, "the equal-volume spheres");
 

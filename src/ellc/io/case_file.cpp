@@ -86,6 +86,13 @@ ModelSpec read_model(TableReader& table) {
   return model;
 }
 
+ContactConstants case_contact_constants(const BodySpec& body_i, const BodySpec& body_j, HertzMode mode,
+                                        const LawParameters& law) {
+  const TipContact tip = tip_contact({body_i.semi_axes, body_i.twist}, {body_j.semi_axes, body_j.twist});
+  return make_contact_constants(mix(body_i.material, body_j.material), tip.body_i, tip.body_j, tip.alpha,
+                                mean_radius(body_i.semi_axes) + mean_radius(body_j.semi_axes), mode, law);
+}
+
 namespace {
 
 CurveCase read_case(const toml::table& root_table, const std::string& source) {

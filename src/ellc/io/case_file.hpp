@@ -10,6 +10,7 @@
 
 #include "ellc/hertz/elliptic_hertz.hpp"
 #include "ellc/io/table_reader.hpp"
+#include "ellc/law/contact_constants.hpp"
 #include "ellc/law/transition_fit.hpp"
 #include "ellc/material/material.hpp"
 
@@ -46,6 +47,11 @@ struct CurveCase {
 // Reads and validates a whole case; throws InputError on the first problem.
 [[nodiscard]] CurveCase read_curve_case(const std::string& path);
 [[nodiscard]] CurveCase parse_curve_case(std::string_view toml_text, const std::string& source);
+
+// Contact constants of the two bodies of a case touching tip to tip (paper Sec. 5): curvatures
+// from tip_contact(), E_e and Y mixed from the bodies' materials, r̂^{I,J} = r̂^I + r̂^J.
+[[nodiscard]] ContactConstants case_contact_constants(const BodySpec& body_i, const BodySpec& body_j, HertzMode mode,
+                                                      const LawParameters& law);
 
 // The calibrated range of the transition fits (paper Table 2): b/a and c/a in [0.5, 2].
 inline constexpr double kCalibratedAspectMin = 0.5;
