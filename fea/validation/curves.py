@@ -21,9 +21,9 @@ def ellc_binary() -> str | None:
     if env:
         return env if os.access(env, os.X_OK) else None
     for build in ("build", "build-fea", "build-release"):
-        path = os.path.join(REPO, build, "apps", "ellc", "ellc")
-        if os.access(path, os.X_OK):
-            return path
+        for path in (os.path.join(REPO, build, "apps", "ellc"), os.path.join(REPO, build, "apps", "ellc", "ellc")):
+            if os.path.isfile(path) and os.access(path, os.X_OK):
+                return path
     return None
 
 

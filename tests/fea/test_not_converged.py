@@ -10,6 +10,7 @@ from ellc_fea.pipeline import run_case
 
 FAKE_CCX = r"""#!/bin/sh
 # stand-in for ccx: two converged increments of segment 1, then a convergence failure
+[ "$1" = "-i" ] || { echo "This is Version 0.0 (stand-in)"; exit 0; }
 job="$2"
 for t in 0.25 0.5; do
   d=$(echo "$t" | awk '{print $1*0.05}')

@@ -1,0 +1,100 @@
+"""INTERIM re-derivation of lambda_max, eps_max, n (per case) and m,o,p / s,t,u (eq. 52)."""
+from __future__ import annotations
+
+import numpy as np
+
+from .curves import law_forces
+from .data import complete_runs
+from .errors import force_errors
+from .fit import fit_case, fit_exponential, lambda_fem, loading_points
+from .law_oracle import PAPER
+from .plotting import figure, save
+
+N_SCAN = np.round(np.arange(1.0, 4.01, 0.1), 2)
+
+
+def per_case_fits() -> list[dict]:
+    rows = []
+    for run in complete_runs("g"):
+        contact = run.contact()
+        free = fit_case(contact, run.overlap, run.force)
+        fixed = fit_case(contact, run.overlap, run.force, n_fixed=PAPER["n"])
+        rows.append({"run": run, "contact": contact, "x": contact.r_e / contact.r_hat,
+                     "free": free, "fixed": fixed,
+                     "max_over_yield": float(run.overlap.max() / contact.delta_y)})
+    return rows
+
+
+def common_n(rows: list[dict]) -> tuple[float, list[float]]:
+    """The n that minimises the summed rms force error over all cases (each refitted)."""
+    totals = [sum(fit_case(r["contact"], r["run"].overlap, r["run"].force, n_fixed=n).rms for r in rows)
+              for n in N_SCAN]
+    return float(N_SCAN[int(np.argmin(totals))]), totals
+
+
+def constants_fit(rows: list[dict], key: str = "fixed") -> dict:
+    x = np.array([r["x"] for r in rows])
+    lam = np.array([r[key].lam_max for r in rows])
+    eps = np.array([r[key].eps_max for r in rows])
+    m, o, p, lam_rms = fit_exponential(x, lam)
+    s, t, u, eps_rms = fit_exponential(x, eps)
+    n = PAPER["n"] if key == "fixed" else float(np.median([r[key].n for r in rows]))
+    return {"m": m, "o": o, "p": p, "s": s, "t": t, "u": u, "n": n, "lam_rms": lam_rms, "eps_rms": eps_rms}
+
+
+def force_effect(rows: list[dict], ours: dict) -> list[dict]:
+    """Per case: FE error of the law with the paper's and with our constants, and their difference."""
+    out = []
+    for r in rows:
+        run = r["run"]
+        d, f = loading_points(run.overlap, run.force)
+        paper, _ = law_forces(run.case, d, "hale", constants=dict(PAPER), use_cli=False)
+        mine, _ = law_forces(run.case, d, "hale", constants=ours, use_cli=False)
+        out.append({"name": run.name, "paper": force_errors(paper, f), "ours": force_errors(mine, f),
+                    "max_change": float(np.max(np.abs(mine / paper - 1.0)))})
+    return out
+
+
+def plot_lambda_profiles(rows: list[dict], ours: dict) -> str:
+    fig, axes = figure(2, width=5.2)
+    for r in rows:
+        run, c = r["run"], r["contact"]
+        lam = lambda_fem(c, *loading_points(run.overlap, run.force))
+        d, _ = loading_points(run.overlap, run.force)
+        ratio = np.sqrt(c.c2(d)) / c.c_y
+        line, = axes[0].plot(ratio, lam, "o", ms=3)
+        grid = np.linspace(c.delta_y, d.max(), 100)
+        axes[0].plot(np.sqrt(c.c2(grid)) / c.c_y, c.lam(grid), "-", color=line.get_color(), lw=0.8)
+    axes[0].set(xlabel="c_c / c_Y", ylabel="λ", ylim=(1.4, 3.6),
+                title="λ_FEM (eq. 51, points) vs eq. 28 with the paper's constants (lines)")
+    for r in rows:
+        if "g05" in r["run"].name:
+            run, c = r["run"], r["contact"]
+            d, f = loading_points(run.overlap, run.force)
+            grid = np.linspace(c.delta_y, d.max(), 200)
+            axes[1].plot(d / c.delta_y, lambda_fem(c, d, f), "o", label="FE, eq. 51")
+            axes[1].plot(grid / c.delta_y, c.lam(grid), "-", label="eq. 28, paper constants")
+            fit = r["fixed"]
+            mine = type(c)(**{**c.__dict__, "lam_max": fit.lam_max, "eps_max": fit.eps_max, "n": fit.n})
+            axes[1].plot(grid / c.delta_y, mine.lam(grid), "--", label="eq. 28, fitted to this case")
+            axes[1].set(title=f"{run.name} (paper Fig. 11 geometry)", xlabel="δ / δ_Y", ylabel="λ",
+                        ylim=(1.4, 3.6))
+            axes[1].legend(fontsize=8)
+    return save(fig, "lambda_profiles.png")
+
+
+def plot_constants(rows: list[dict], ours: dict) -> str:
+    fig, axes = figure(2, width=5.0)
+    x = np.array([r["x"] for r in rows])
+    grid = np.linspace(0.0, max(0.7, x.max() * 1.05), 200)
+    for ax, (key, a, b, c, label) in zip(axes, (("lam_max", "m", "o", "p", "λ_max"),
+                                                 ("eps_max", "s", "t", "u", "ε_max"))):
+        y = np.array([getattr(r["fixed"], key) for r in rows])
+        plateau = np.array([r["fixed"].plateau for r in rows])
+        ax.plot(x[plateau], y[plateau], "o", label="FE fit (plateau reached)")
+        ax.plot(x[~plateau], y[~plateau], "s", mfc="none", label="FE fit (extrapolated)")
+        ax.plot(grid, PAPER[a] * np.exp(PAPER[b] * grid) + PAPER[c], "-", label="paper eq. 54")
+        ax.plot(grid, ours[a] * np.exp(ours[b] * grid) + ours[c], "--", label="ours, eq. 52 (interim)")
+        ax.set(xlabel="R_e / r̂^{I,J}", ylabel=label)
+        ax.legend(fontsize=8)
+    return save(fig, "fitted_constants.png")

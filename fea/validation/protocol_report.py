@@ -1,0 +1,50 @@
+"""The paper's case 1 and case 2 protocols: FE against the law (Hale and exact)."""
+from __future__ import annotations
+
+from .curves import law_forces
+from .data import load_run
+from .errors import force_errors
+from .plotting import figure, save
+
+CASES = {"paper_case1": "case 1 (paper: mean error 1.01 %)", "paper_case2": "case 2 (paper: mean error 0.59 %)"}
+
+
+def protocol_results(constants: dict | None = None) -> dict:
+    out = {}
+    for name in CASES:
+        run = load_run(name)
+        if run is None:
+            continue
+        entry = {"run": run}
+        for mode in ("hale", "exact"):
+            law, source = law_forces(run.case, run.overlap, mode, constants=constants)
+            entry[mode] = {"force": law, "source": source, **force_errors(law, run.force)}
+        out[name] = entry
+    return out
+
+
+def plot_protocols(results: dict, suffix: str = "") -> str:
+    fig, axes = figure(max(1, len(results)), width=5.0)
+    for ax, (name, entry) in zip(axes, results.items()):
+        run = entry["run"]
+        contact = run.contact()
+        x = run.overlap / contact.delta_y
+        ax.plot(x, run.force / contact.f_py, "o", ms=3, color="tab:blue", alpha=0.6, label="FE (CalculiX)")
+        for mode, style in (("hale", "-"), ("exact", "--")):
+            e = entry[mode]
+            ax.plot(x, e["force"] / contact.f_py, style, label=f"law, {mode} ({e['source']}): "
+                    f"mean {100 * e['mean_rel']:.2f} %, max {100 * e['max_rel']:.1f} %")
+        ax.set(title=f"{name}: {CASES[name]}", xlabel="δ / δ_Y", ylabel="F / F_pY")
+        ax.legend(fontsize=7)
+    return save(fig, f"paper_cases{suffix}.png")
+
+
+def protocol_table(results: dict) -> list[str]:
+    lines = ["| case | Hertz | source | mean rel. error | max rel. error | mean |ΔF|/F_max | max |ΔF|/F_max |",
+             "| --- | --- | --- | ---: | ---: | ---: | ---: |"]
+    for name, entry in results.items():
+        for mode in ("hale", "exact"):
+            e = entry[mode]
+            lines.append(f"| {name} | {mode} | {e['source']} | {100 * e['mean_rel']:.2f} % | {100 * e['max_rel']:.2f} % | "
+                         f"{100 * e['mean_of_peak']:.2f} % | {100 * e['max_of_peak']:.2f} % |")
+    return lines

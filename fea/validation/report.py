@@ -1,0 +1,101 @@
+"""fea/make_validation: recompute every number and figure of docs/validation.md from data/fea.
+
+Tables go between <!-- BEGIN:key --> and <!-- END:key --> markers in the document, so the
+prose stays hand-written while the numbers always match the committed data.
+"""
+from __future__ import annotations
+
+import json
+import os
+import re
+import sys
+
+from . import calibration_report as cal
+from .elastic_report import elastic_errors, elastic_table, plot_elastic
+from .law_oracle import PAPER
+from .plotting import REPO
+from .protocol_report import plot_protocols, protocol_results, protocol_table
+
+DOC = os.path.join(REPO, "docs", "validation.md")
+SUMMARY = os.path.join(REPO, "data", "fea", "validation_summary.json")
+
+
+def _replace(text: str, key: str, lines: list[str]) -> str:
+    pattern = re.compile(rf"(<!-- BEGIN:{key} -->\n).*?(<!-- END:{key} -->)", re.S)
+    if not pattern.search(text):
+        print(f"make_validation: no markers for {key} in docs/validation.md", file=sys.stderr)
+        return text
+    return pattern.sub(lambda m: m.group(1) + "\n".join(lines) + "\n" + m.group(2), text)
+
+
+def _constants_table(ours: dict, free: dict, n_best: float) -> list[str]:
+    keys = ("m", "o", "p", "s", "t", "u")
+    return ["| constants | " + " | ".join(keys) + " | n |", "| --- |" + " ---: |" * 7,
+            "| paper (eq. 53) | " + " | ".join(f"{PAPER[k]:.2f}" for k in keys) + f" | {PAPER['n']:.1f} |",
+            "| ours, n fixed at 1.8 (interim) | " + " | ".join(f"{ours[k]:.2f}" for k in keys) + " | 1.8 |",
+            "| ours, n free per case (interim) | " + " | ".join(f"{free[k]:.2f}" for k in keys)
+            + f" | median {free['n']:.2f} |",
+            f"| best common n (summed rms force error) | | | | | | | {n_best:.1f} |"]
+
+
+def _case_table(rows: list[dict]) -> list[str]:
+    out = ["| case | R_e/r̂ | δ_end/δ_Y | λ_max | ε_max | plateau | rms force error | n free: λ_max, ε_max, n |",
+           "| --- | ---: | ---: | ---: | ---: | --- | ---: | --- |"]
+    for r in rows:
+        f, g = r["fixed"], r["free"]
+        out.append(f"| {r['run'].name} | {r['x']:.3f} | {r['max_over_yield']:.1f} | {f.lam_max:.2f} | "
+                   f"{f.eps_max:.2f} | {'yes' if f.plateau else 'no'} | {100 * f.rms:.2f} % | "
+                   f"{g.lam_max:.2f}, {g.eps_max:.2f}, {g.n:.2f} |")
+    return out
+
+
+def _effect_table(effect: list[dict]) -> list[str]:
+    out = ["| case | law vs FE, paper constants: mean / max | ours: mean / max | max change of force |",
+           "| --- | ---: | ---: | ---: |"]
+    for e in effect:
+        p, o = e["paper"], e["ours"]
+        out.append(f"| {e['name']} | {100 * p['mean_rel']:.2f} % / {100 * p['max_rel']:.2f} % | "
+                   f"{100 * o['mean_rel']:.2f} % / {100 * o['max_rel']:.2f} % | {100 * e['max_change']:.2f} % |")
+    return out
+
+
+def main() -> int:
+    with open(DOC) as fh:
+        text = fh.read()
+    summary: dict = {}
+    errors = elastic_errors()
+    plot_elastic(errors)
+    text = _replace(text, "elastic", elastic_table(errors))
+    summary["elastic"] = {p: {lv: {"final_error": float(e["error"][-1]), "nodes": e["nodes"]}
+                              for lv, e in d.items()} for p, d in errors.items()}
+    rows = cal.per_case_fits()
+    if len(rows) >= 4:
+        ours = cal.constants_fit(rows, "fixed")
+        free = cal.constants_fit(rows, "free")
+        n_best, _ = cal.common_n(rows)
+        effect = cal.force_effect(rows, ours)
+        cal.plot_lambda_profiles(rows, ours)
+        cal.plot_constants(rows, ours)
+        text = _replace(text, "constants", _constants_table(ours, free, n_best))
+        text = _replace(text, "cases", _case_table(rows))
+        text = _replace(text, "effect", _effect_table(effect))
+        summary["constants_n_fixed"], summary["constants_n_free"] = ours, free
+        summary["common_n"] = n_best
+        summary["force_effect"] = effect
+    results = protocol_results()
+    if results:
+        plot_protocols(results)
+        text = _replace(text, "protocols", protocol_table(results))
+        summary["protocols"] = {n: {m: {k: v for k, v in e[m].items() if k != "force"}
+                                    for m in ("hale", "exact")} for n, e in results.items()}
+        if len(rows) >= 4:
+            mine = protocol_results(constants=ours)
+            plot_protocols(mine, suffix="_our_constants")
+            text = _replace(text, "protocols_ours", protocol_table(mine))
+    with open(DOC, "w") as fh:
+        fh.write(text)
+    with open(SUMMARY, "w") as fh:
+        json.dump(summary, fh, indent=1, default=float)
+        fh.write("\n")
+    print(f"make_validation: updated {os.path.relpath(DOC, REPO)} and {os.path.relpath(SUMMARY, REPO)}")
+    return 0
