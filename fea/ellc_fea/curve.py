@@ -7,9 +7,12 @@ Columns (documented in fea/README.md):
   step_time       CalculiX step time of the increment, 0..1 within the segment
   contact_semi_y  contact semi-axis along y from the deformed gap on the z = 0 line, um
   contact_semi_z  contact semi-axis along z from the deformed gap on the y = 0 line, um
-  peak_pressure   largest contact pressure at any active slave integration point, MPa
+  peak_pressure   largest contact pressure at any active slave integration point, MPa; spiky
+                  (penalty surface-to-surface contact): an upper bound, not the smooth p0
 """
 from __future__ import annotations
+
+import math
 
 import numpy as np
 
@@ -53,18 +56,17 @@ def contact_semi_axis(inc: Increment, nodes: np.ndarray, axis: int) -> float:
 
 
 def rows(incs: list[Increment], nodes: np.ndarray) -> list[tuple]:
+    """One row per converged increment.  The .dat time is the total time: protocol segment k
+    (one *STEP of period 1) covers (k-1, k]."""
     out = []
-    segment, last_time = 1, 0.0
     for inc in incs:
         overlap = inc.u["PILOTI"][0, 1] - inc.u["PILOTJ"][0, 1]
-        if out and inc.time == last_time and abs(overlap - out[-1][0]) <= 1e-9 * (1 + abs(overlap)):
+        if out and abs(inc.time - out[-1][3] - (out[-1][2] - 1)) < 1e-9:
             out.pop()  # CalculiX prints a step's last increment twice: keep the later copy
-        elif inc.time <= last_time:  # step time restarted: next protocol segment
-            segment += 1
-        last_time = inc.time
+        segment = max(1, math.ceil(inc.time - 1e-6))
         force = OCTANT_FACTOR * inc.rf["XI"][0]
         peak = float(inc.pressure.max()) if len(inc.pressure) else 0.0
-        out.append((overlap, force, segment, inc.time, contact_semi_axis(inc, nodes, 1),
+        out.append((overlap, force, segment, inc.time - (segment - 1), contact_semi_axis(inc, nodes, 1),
                     contact_semi_axis(inc, nodes, 2), peak))
     return out
 

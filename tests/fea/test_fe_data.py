@@ -1,8 +1,10 @@
 """Checks on the committed FE reference data (data/fea): no FE tools needed.
 
 - every CSV in data/fea has a complete manifest record (command, mesh, CalculiX version);
-- the elastic runs at medium and fine mesh are within 1.5 % of exact elliptical Hertz (test
-  oracle in fea/validation/law_oracle.py) at overlaps past the first increment;
+- the elastic runs at medium and fine mesh are close to exact elliptical Hertz (test oracle in
+  fea/validation/law_oracle.py) at overlaps past the first increment: spheres within 1.5 %,
+  ellipsoid pairs within 5 % (the FE overlap is the approach of the body centres; slender
+  bodies are softer and flat ones stiffer than Hertz's half-spaces, see docs/validation.md);
 - the mesh-convergence evidence: the fine sphere run differs from medium by less than 1 %.
 """
 import glob
@@ -14,7 +16,7 @@ import pytest
 from ellc_fea.manifest import read_manifest
 from validation.data import DATA, load_run
 
-HERTZ_TOLERANCE = 0.015
+HERTZ_TOLERANCE = {"e_sphere": 0.015, "e_case2": 0.05, "e_case1": 0.05}
 
 
 def test_every_csv_has_a_manifest_record():
@@ -36,7 +38,7 @@ def test_elastic_runs_match_exact_hertz(pair, level):
         pytest.skip(f"no complete {pair}_elastic_{level} run in data/fea")
     contact = run.contact(exact=True)
     err = run.force[1:] / contact.hertz(run.overlap[1:]) - 1.0
-    assert np.all(np.abs(err) < HERTZ_TOLERANCE), err
+    assert np.all(np.abs(err) < HERTZ_TOLERANCE[pair]), err
 
 
 def test_sphere_mesh_convergence():
