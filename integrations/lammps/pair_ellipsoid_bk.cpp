@@ -1,0 +1,362 @@
+#include "pair_ellipsoid_bk.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+#include "fix_contact_history.hpp"
+
+namespace ellc_lammps {
+
+using namespace LAMMPS_NS;
+
+namespace {
+std::string style_prefix() { return std::string("pair ") + PairEllipsoidBK::kStyle + ": "; }
+
+// The calibrated range of the transition fits: semi-axes 1:[0.5..2]:[0.5..2] around the middle one.
+bool in_calibrated_range(std::array<double, 3> semi_axes) {
+  std::sort(semi_axes.begin(), semi_axes.end());
+  return semi_axes[0] >= 0.5 * semi_axes[1] && semi_axes[2] <= 2.0 * semi_axes[1];
+}
+}  // namespace
+
+PairEllipsoidBK::PairEllipsoidBK(LAMMPS* instance) : Pair(instance) {
+  single_enable = 0;
+  restartinfo = 1;
+  comm_forward = kBodyValues;
+  finitecutflag = 1;
+}
+
+PairEllipsoidBK::~PairEllipsoidBK() {
+  if (copymode) return;
+  // The history fix and the shape compute belong to this style; remove them with it.
+  if (modify->find_fix(kHistoryFixId) >= 0) modify->delete_fix(kHistoryFixId);
+  if (modify->find_compute(kBodiesComputeId) >= 0) modify->delete_compute(kBodiesComputeId);
+  if (allocated) {
+    memory->destroy(setflag);
+    memory->destroy(cutsq);
+  }
+}
+
+void PairEllipsoidBK::allocate() {
+  allocated = 1;
+  const int n = atom->ntypes;
+  memory->create(setflag, n + 1, n + 1, "pair:setflag");
+  memory->create(cutsq, n + 1, n + 1, "pair:cutsq");
+  for (int i = 0; i <= n; ++i)
+    for (int j = 0; j <= n; ++j) setflag[i][j] = 0;
+  const auto size = static_cast<std::size_t>(n + 1) * static_cast<std::size_t>(n + 1);
+  type_coefficients_.assign(size, {});
+  pair_coefficients_.assign(size, {});
+  type_radius_.assign(static_cast<std::size_t>(n + 1), 0.0);
+}
+
+void PairEllipsoidBK::settings(int narg, char** arg) {
+  for (int at = 0; at < narg; at += 2) {
+    const std::string keyword = arg[at];
+    if (keyword != "hertz" || at + 1 >= narg)
+      fail(error, FLERR, style_prefix() + "unknown setting '" + keyword + "' (expected: hertz hale|exact)");
+    const std::string value = arg[at + 1];
+    if (value == "hale") hertz_mode_ = ellc::HertzMode::hale;
+    else if (value == "exact") hertz_mode_ = ellc::HertzMode::exact;
+    else fail(error, FLERR, style_prefix() + "hertz must be hale or exact, got '" + value + "'");
+  }
+  // Allocated here so a missing pair_coeff is reported by init_one with the types it concerns.
+  if (!allocated) allocate();
+}
+
+void PairEllipsoidBK::coeff(int narg, char** arg) {
+  if (narg < 2) fail(error, FLERR, style_prefix() + "pair_coeff needs two atom types");
+  if (!allocated) allocate();
+  int ilo = 0, ihi = 0, jlo = 0, jhi = 0;
+  utils::bounds(FLERR, arg[0], 1, atom->ntypes, ilo, ihi, error);
+  utils::bounds(FLERR, arg[1], 1, atom->ntypes, jlo, jhi, error);
+  const ParsedCoefficients parsed = parse_coefficients(std::vector<std::string>(arg + 2, arg + narg));
+  if (!parsed.error.empty())
+    fail(error, FLERR, style_prefix() + "pair_coeff " + arg[0] + " " + arg[1] + ": " + parsed.error);
+  int count = 0;
+  for (int i = ilo; i <= ihi; ++i) {
+    for (int j = std::max(jlo, i); j <= jhi; ++j) {
+      type_coefficients_[type_index(i, j)] = parsed.coefficients;
+      setflag[i][j] = 1;
+      ++count;
+    }
+  }
+  if (count == 0) fail(error, FLERR, style_prefix() + "pair_coeff " + arg[0] + " " + arg[1] + " sets no pair of types");
+}
+
+void PairEllipsoidBK::init_style() {
+  if (!atom->ellipsoid_flag)
+    fail(error, FLERR,
+         style_prefix() + "requires atom_style ellipsoid (this run uses atom_style " + atom->atom_style + ")");
+  if (!atom->rmass_flag || !atom->angmom_flag || !atom->torque_flag)
+    fail(error, FLERR, style_prefix() + "requires per-atom mass, angular momentum and torque (atom_style ellipsoid)");
+  if (atom->tag_enable == 0) fail(error, FLERR, style_prefix() + "requires atom IDs");
+  comm->ghost_velocity = 1;  // relative velocities at contact points of ghost partners
+  neighbor->request(this, instance_me);
+
+  // Internal compute: shapes (diameters) and quaternions of owned atoms.
+  if (modify->find_compute(kBodiesComputeId) < 0)
+    modify->add_compute(std::string(kBodiesComputeId) +
+                        " all property/atom shapex shapey shapez quatw quati quatj quatk");
+  bodies_compute_ = modify->compute[modify->find_compute(kBodiesComputeId)];
+  bodies_compute_->init();
+
+  // History fix. On a restarted run, creating it here picks up its records from the restart file.
+  if (modify->find_fix(kHistoryFixId) < 0)
+    modify->add_fix(std::string(kHistoryFixId) + " all " + FixContactHistory::kStyle + " " +
+                    std::to_string(HistoryLayout::size()));
+  history_ = dynamic_cast<FixContactHistory*>(modify->fix[modify->find_fix(kHistoryFixId)]);
+  if (history_ == nullptr || history_->values_per_contact() != HistoryLayout::size())
+    fail(error, FLERR, style_prefix() + "fix " + kHistoryFixId + " exists but is not this style's history");
+  history_->attach(this);
+
+  check_shapes();
+}
+
+// Per-type cutoff radii, and the bad-input checks on shapes: point particles, calibrated range.
+void PairEllipsoidBK::check_shapes() {
+  gather_bodies();
+  const int ntypes = atom->ntypes;
+  std::vector<double> radius(static_cast<std::size_t>(ntypes + 1), 0.0);
+  tagint first_point = 0;
+  int outside_range = 0;
+  for (int i = 0; i < atom->nlocal; ++i) {
+    const double* body = &bodies_[static_cast<std::size_t>(i) * kBodyValues];
+    if (!(body[0] > 0.0 && body[1] > 0.0 && body[2] > 0.0)) {
+      if (first_point == 0 || atom->tag[i] < first_point) first_point = atom->tag[i];
+      continue;
+    }
+    auto& r = radius[static_cast<std::size_t>(atom->type[i])];
+    r = std::max({r, body[0], body[1], body[2]});
+    if (!in_calibrated_range({body[0], body[1], body[2]})) outside_range = 1;
+  }
+  // first_point: smallest ID of a point particle on any rank (0 = none).
+  tagint local_key = first_point == 0 ? MAXTAGINT : first_point, global_key = 0;
+  MPI_Allreduce(&local_key, &global_key, 1, MPI_LMP_TAGINT, MPI_MIN, world);
+  if (global_key != MAXTAGINT)
+    fail(error, FLERR,
+         style_prefix() + "atom " + std::to_string(global_key) +
+             " has zero shape (a point particle); every atom needs three positive semi-axes "
+             "(set type ... shape, or the ellipsoid section of the data file)");
+  type_radius_.assign(static_cast<std::size_t>(ntypes + 1), 0.0);
+  MPI_Allreduce(radius.data(), type_radius_.data(), ntypes + 1, MPI_DOUBLE, MPI_MAX, world);
+  int any_outside = 0;
+  MPI_Allreduce(&outside_range, &any_outside, 1, MPI_INT, MPI_MAX, world);
+  if (any_outside && !warned_aspect_ && comm->me == 0) {
+    error->warning(FLERR, style_prefix() +
+                              "some particles have aspect ratios outside 1:[0.5..2]:[0.5..2], the range the "
+                              "transition fits (eq. 52-54) were calibrated for; the law still evaluates");
+    warned_aspect_ = true;
+  }
+}
+
+double PairEllipsoidBK::init_one(int i, int j) {
+  PairCoefficients resolved;
+  if (setflag[i][j]) {
+    resolved = explicit_pair(type_coefficients_[type_index(i, j)]);
+  } else if (setflag[i][i] && setflag[j][j]) {
+    std::string problem;
+    resolved = mixed_pair(type_coefficients_[type_index(i, i)], type_coefficients_[type_index(j, j)], problem);
+    if (!problem.empty())
+      fail(error, FLERR, style_prefix() + "types " + std::to_string(i) + " and " + std::to_string(j) + ": " + problem);
+  } else {
+    fail(error, FLERR,
+         style_prefix() + "no pair_coeff for atom types " + std::to_string(i) + " " + std::to_string(j) +
+             " (give 'pair_coeff " + std::to_string(i) + " " + std::to_string(j) + " E nu Y ...', or lines for " +
+             std::to_string(i) + " " + std::to_string(i) + " and " + std::to_string(j) + " " + std::to_string(j) +
+             " to mix from)");
+  }
+  pair_coefficients_[type_index(i, j)] = resolved;
+  pair_coefficients_[type_index(j, i)] = resolved;
+
+  // Contact is possible only within the sum of the largest semi-axes. A type without atoms gets
+  // the largest radius present, so atoms added later are not missed (checked in compute()).
+  const double largest = *std::max_element(type_radius_.begin(), type_radius_.end());
+  const auto radius = [&](int type) {
+    const double r = type_radius_[static_cast<std::size_t>(type)];
+    return r > 0.0 ? r : largest;
+  };
+  const double cut = radius(i) + radius(j);
+  return cut > 0.0 ? cut : 1.0;
+}
+
+// Shapes and quaternions of owned atoms from the compute, then to ghost atoms.
+void PairEllipsoidBK::gather_bodies() {
+  const int nmax = atom->nmax;
+  if (bodies_.size() < static_cast<std::size_t>(nmax) * kBodyValues) {
+    bodies_.resize(static_cast<std::size_t>(nmax) * kBodyValues);
+    angular_velocity_.resize(static_cast<std::size_t>(nmax) * 3);
+  }
+  bodies_compute_->compute_peratom();
+  bodies_compute_->invoked_peratom = update->ntimestep;
+  double** values = bodies_compute_->array_atom;
+  for (int i = 0; i < atom->nlocal; ++i) {
+    double* body = &bodies_[static_cast<std::size_t>(i) * kBodyValues];
+    for (int k = 0; k < 3; ++k) body[k] = 0.5 * values[i][k];  // diameters → semi-axes
+    for (int k = 3; k < kBodyValues; ++k) body[k] = values[i][k];
+  }
+  comm->forward_comm_pair(this);
+}
+
+int PairEllipsoidBK::pack_forward_comm(int n, int* send_list, double* buffer, int /*pbc_flag*/, int* /*pbc*/) {
+  for (int k = 0; k < n; ++k) {
+    const double* body = &bodies_[static_cast<std::size_t>(send_list[k]) * kBodyValues];
+    std::copy(body, body + kBodyValues, buffer + static_cast<std::ptrdiff_t>(k) * kBodyValues);
+  }
+  return n * kBodyValues;
+}
+
+void PairEllipsoidBK::unpack_forward_comm(int n, int first, double* buffer) {
+  std::copy(buffer, buffer + static_cast<std::ptrdiff_t>(n) * kBodyValues,
+            bodies_.begin() + static_cast<std::ptrdiff_t>(first) * kBodyValues);
+}
+
+BodyState PairEllipsoidBK::body_state(int index) const {
+  const double* body = &bodies_[static_cast<std::size_t>(index) * kBodyValues];
+  const double* x = atom->x[index];
+  const double* v = atom->v[index];
+  const double* w = &angular_velocity_[static_cast<std::size_t>(index) * 3];
+  BodyState state;
+  state.position = {x[0], x[1], x[2]};
+  state.velocity = {v[0], v[1], v[2]};
+  state.angular_velocity = {w[0], w[1], w[2]};
+  state.semi_axes = {body[0], body[1], body[2]};
+  state.orientation = Eigen::Quaterniond(body[3], body[4], body[5], body[6]);
+  state.mass = atom->rmass[index];
+  return state;
+}
+
+void PairEllipsoidBK::compute(int eflag, int vflag) {
+  ev_init(eflag, vflag);
+  if (!history_->slots_match_neighbor_list())
+    fail_one(error, FLERR, style_prefix() + "contact history is out of step with the neighbor list (internal error)");
+  gather_bodies();
+
+  const int nlocal = atom->nlocal;
+  const int nall = nlocal + atom->nghost;
+  const tagint* tag = atom->tag;
+  const int* type = atom->type;
+  double** x = atom->x;
+  double** f = atom->f;
+  double** torque = atom->torque;
+  const bool newton = force->newton_pair != 0;
+  const double timestep = update->dt;
+
+  for (int index = 0; index < nall; ++index) {
+    const double* body = &bodies_[static_cast<std::size_t>(index) * kBodyValues];
+    const double* momentum = atom->angmom[index];
+    const double largest = std::max({body[0], body[1], body[2]});
+    if (largest > type_radius_[static_cast<std::size_t>(type[index])] && type_radius_[static_cast<std::size_t>(type[index])] > 0.0)
+      fail_one(error, FLERR, style_prefix() + "atom " + std::to_string(tag[index]) +
+                             " is larger than any atom of its type was at the start of the run; re-run to update "
+                             "the contact cutoffs");
+    Eigen::Map<Eigen::Vector3d> omega(&angular_velocity_[static_cast<std::size_t>(index) * 3]);
+    if (largest > 0.0)
+      omega = angular_velocity({momentum[0], momentum[1], momentum[2]},
+                               Eigen::Quaterniond(body[3], body[4], body[5], body[6]), {body[0], body[1], body[2]},
+                               atom->rmass[index]);
+    else
+      omega.setZero();
+  }
+
+  const NeighList* neighbors = list;
+  for (int ii = 0; ii < neighbors->inum; ++ii) {
+    const int i = neighbors->ilist[ii];
+    const int* jlist = neighbors->firstneigh[i];
+    const double radius_i = std::max({bodies_[static_cast<std::size_t>(i) * kBodyValues],
+                                      bodies_[static_cast<std::size_t>(i) * kBodyValues + 1],
+                                      bodies_[static_cast<std::size_t>(i) * kBodyValues + 2]});
+    for (int jj = 0; jj < neighbors->numneigh[i]; ++jj) {
+      const int j = jlist[jj] & NEIGHMASK;
+      double* history = history_->slot_values(i, jj);
+      const double* body_j = &bodies_[static_cast<std::size_t>(j) * kBodyValues];
+      const double reach = radius_i + std::max({body_j[0], body_j[1], body_j[2]});
+      const double dx = x[i][0] - x[j][0], dy = x[i][1] - x[j][1], dz = x[i][2] - x[j][2];
+      if (dx * dx + dy * dy + dz * dz >= reach * reach) {  // bounding spheres apart
+        if (history_->slot_active(i, jj)) {
+          std::fill(history, history + HistoryLayout::size(), 0.0);
+          history_->set_slot_active(i, jj, false);
+        }
+        continue;
+      }
+      // Canonical orientation: a = lower atom ID.
+      const bool i_is_a = tag[i] < tag[j];
+      const int a = i_is_a ? i : j;
+      const int b = i_is_a ? j : i;
+      const PairResult result =
+          evaluate_pair(body_state(a), body_state(b), pair_coefficients_[type_index(type[i], type[j])], hertz_mode_,
+                        timestep, history);
+      if (result.geometry_failed)
+        fail_one(error, FLERR, style_prefix() + "the narrow phase failed for atoms " + std::to_string(tag[a]) + " and " +
+                               std::to_string(tag[b]));
+      history_->set_slot_active(i, jj, result.touching);
+      if (!result.touching) continue;
+
+      const Eigen::Vector3d force_on_i = i_is_a ? Eigen::Vector3d(-result.force_on_b) : result.force_on_b;
+      const Eigen::Vector3d& torque_on_i = i_is_a ? result.torque_on_a : result.torque_on_b;
+      const Eigen::Vector3d& torque_on_j = i_is_a ? result.torque_on_b : result.torque_on_a;
+      for (int k = 0; k < 3; ++k) {
+        f[i][k] += force_on_i[k];
+        torque[i][k] += torque_on_i[k];
+      }
+      if (newton || j < nlocal) {
+        for (int k = 0; k < 3; ++k) {
+          f[j][k] -= force_on_i[k];
+          torque[j][k] += torque_on_j[k];
+        }
+      }
+      if (evflag)
+        ev_tally_xyz(i, j, nlocal, newton ? 1 : 0, 0.0, 0.0, force_on_i.x(), force_on_i.y(), force_on_i.z(), dx, dy,
+                     dz);
+    }
+  }
+  if (vflag_fdotr) virial_fdotr_compute();
+}
+
+// Restart files carry the settings and every explicit pair_coeff line; mixing is redone on read.
+void PairEllipsoidBK::write_restart_settings(FILE* file) {
+  const int mode = hertz_mode_ == ellc::HertzMode::exact ? 1 : 0;
+  std::fwrite(&mode, sizeof(int), 1, file);
+}
+
+void PairEllipsoidBK::read_restart_settings(FILE* file) {
+  int mode = 0;
+  if (comm->me == 0) utils::sfread(FLERR, &mode, sizeof(int), 1, file, nullptr, error);
+  MPI_Bcast(&mode, 1, MPI_INT, 0, world);
+  hertz_mode_ = mode == 1 ? ellc::HertzMode::exact : ellc::HertzMode::hale;
+}
+
+void PairEllipsoidBK::write_restart(FILE* file) {
+  write_restart_settings(file);
+  for (int i = 1; i <= atom->ntypes; ++i) {
+    for (int j = i; j <= atom->ntypes; ++j) {
+      std::fwrite(&setflag[i][j], sizeof(int), 1, file);
+      if (!setflag[i][j]) continue;
+      const auto values = type_coefficients_[type_index(i, j)].serialize();
+      std::fwrite(values.data(), sizeof(double), values.size(), file);
+    }
+  }
+}
+
+void PairEllipsoidBK::read_restart(FILE* file) {
+  read_restart_settings(file);
+  allocate();
+  for (int i = 1; i <= atom->ntypes; ++i) {
+    for (int j = i; j <= atom->ntypes; ++j) {
+      if (comm->me == 0) utils::sfread(FLERR, &setflag[i][j], sizeof(int), 1, file, nullptr, error);
+      MPI_Bcast(&setflag[i][j], 1, MPI_INT, 0, world);
+      if (!setflag[i][j]) continue;
+      std::array<double, TypeCoefficients::kSerializedSize> values{};
+      if (comm->me == 0) utils::sfread(FLERR, values.data(), sizeof(double), values.size(), file, nullptr, error);
+      MPI_Bcast(values.data(), static_cast<int>(values.size()), MPI_DOUBLE, 0, world);
+      type_coefficients_[type_index(i, j)] = TypeCoefficients::deserialize(values);
+    }
+  }
+}
+
+double PairEllipsoidBK::memory_usage() {
+  return static_cast<double>((bodies_.capacity() + angular_velocity_.capacity()) * sizeof(double));
+}
+
+}  // namespace ellc_lammps
