@@ -1,0 +1,152 @@
+// `ellc dem SCENARIO.toml [-o DIR] [--threads N] [--restart CHECKPOINT] [--force] [--no-plot]`
+// Packing generation + calendering with the built-in DEM engine (docs/engine.md).
+// Outputs in DIR: timeseries.csv, summary.txt, pressure_thickness.png, vtk/, checkpoint.bin.
+
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+#include <string>
+
+#ifdef _OPENMP
+#include <omp.h>
+#endif
+
+#include "command_registry.hpp"
+#include "ellc/engine/scenario_runner.hpp"
+#include "plot_runner.hpp"
+
+namespace ellc::cli {
+namespace {
+
+struct DemOptions {
+  std::string scenario_path;
+  std::string output_directory;
+  std::string restart_path;
+  int threads = 0;
+  bool force = false;
+  bool no_plot = false;
+  bool quiet = false;
+  long long max_steps = 0;
+};
+
+std::string clock_text(double seconds) {
+  char text[32];
+  const long total = static_cast<long>(seconds + 0.5);
+  if (total >= 3600)
+    std::snprintf(text, sizeof text, "%ldh%02ldm", total / 3600, (total / 60) % 60);
+  else
+    std::snprintf(text, sizeof text, "%ldm%02lds", total / 60, total % 60);
+  return text;
+}
+
+// A bar with ETA on a terminal; a plain line every 10 % otherwise (logs, CI).
+class Progress {
+ public:
+  explicit Progress(bool quiet) : quiet_(quiet), tty_(isatty(fileno(stderr)) != 0), start_(clock::now()) {}
+  void update(const engine::ScenarioRunner& runner) {
+    if (quiet_) return;
+    const double fraction = runner.progress();
+    const double elapsed = std::chrono::duration<double>(clock::now() - start_).count();
+    const double eta = fraction > 1e-3 ? elapsed * (1.0 - fraction) / fraction : 0.0;
+    const auto& sim = runner.simulation();
+    if (tty_) {
+      constexpr int width = 30;
+      const int filled = static_cast<int>(fraction * width);
+      std::fprintf(stderr, "\r[%-*.*s] %5.1f%%  %-6s step %llu  p = %8.3g MPa  ETA %s   ", width, filled,
+                   "##############################", 100.0 * fraction, engine::phase_name(runner.state().phase),
+                   static_cast<unsigned long long>(sim.step_count()), sim.wall_pressure(engine::kTopWall),
+                   clock_text(eta).c_str());
+      std::fflush(stderr);
+    } else if (fraction >= next_report_ || runner.done()) {
+      std::fprintf(stderr, "ellc dem: %3.0f%%  %-6s step %llu  t = %.4g us  gap = %.4g um  p = %.4g MPa  elapsed %s  ETA %s\n",
+                   100.0 * fraction, engine::phase_name(runner.state().phase),
+                   static_cast<unsigned long long>(sim.step_count()), sim.time(), sim.gap(),
+                   sim.wall_pressure(engine::kTopWall), clock_text(elapsed).c_str(), clock_text(eta).c_str());
+      while (next_report_ <= fraction) next_report_ += 0.1;
+    }
+  }
+  void finish() {
+    if (!quiet_ && tty_) std::fprintf(stderr, "\n");
+  }
+  [[nodiscard]] double seconds() const { return std::chrono::duration<double>(clock::now() - start_).count(); }
+
+ private:
+  using clock = std::chrono::steady_clock;
+  bool quiet_;
+  bool tty_;
+  clock::time_point start_;
+  double next_report_ = 0.0;
+};
+
+void print_summary(const engine::RunSummary& s, const std::string& directory, double seconds) {
+  std::printf("ellc dem: %s after %llu steps (%.4g us simulated, dt = %.4g us, estimate %.4g us), %zu particles, %.1f s\n",
+              s.finished ? "finished" : "stopped", static_cast<unsigned long long>(s.steps), s.time, s.dt,
+              s.dt_estimate, s.particles, seconds);
+  std::printf("  max pressure      %.6g MPa\n", s.max_pressure);
+  std::printf("  loaded thickness  %.6g um  (porosity %.4f)\n", s.loaded_thickness, s.loaded_porosity);
+  std::printf("  final thickness   %.6g um  (porosity %.4f)\n", s.final_thickness, s.final_porosity);
+  std::printf("  springback        %.4g %%\n", s.springback_percent);
+  std::printf("  plastic energy    %.6g pJ\n", s.plastic_dissipation);
+  if (s.narrow_phase_failures > 0)
+    std::printf("  narrow phase      %llu failed evaluations (treated as no force)\n",
+                static_cast<unsigned long long>(s.narrow_phase_failures));
+  std::printf("  outputs in %s: timeseries.csv summary.txt vtk/ checkpoint.bin\n", directory.c_str());
+}
+
+void run_dem(const DemOptions& options) {
+#ifdef _OPENMP
+  if (options.threads > 0) omp_set_num_threads(options.threads);
+#endif
+  engine::Scenario scenario = engine::read_scenario(options.scenario_path);
+  engine::RunOptions run_options;
+  run_options.output_directory = options.output_directory;
+  run_options.restart_path = options.restart_path;
+  run_options.force = options.force;
+  Progress progress(options.quiet);
+  engine::ScenarioRunner runner(std::move(scenario), run_options);
+  for (const auto& warning : runner.warnings()) std::fprintf(stderr, "ellc: warning: %s\n", warning.c_str());
+
+  const std::uint64_t chunk = 100;
+  std::uint64_t budget = options.max_steps > 0 ? static_cast<std::uint64_t>(options.max_steps) : ~std::uint64_t{0};
+  while (!runner.done() && budget > 0) {
+    const std::uint64_t steps = std::min(chunk, budget);
+    runner.advance(steps);
+    budget -= steps;
+    progress.update(runner);
+  }
+  progress.finish();
+  const std::string checkpoint = (std::filesystem::path(runner.output_directory()) / "checkpoint.bin").string();
+  if (!runner.done()) runner.write_checkpoint(checkpoint);
+  runner.write_summary();
+  print_summary(runner.summary(), runner.output_directory(), progress.seconds());
+  if (!runner.done()) std::printf("  stopped at --max-steps; continue with --restart %s\n", checkpoint.c_str());
+  if (!options.no_plot) {
+    const auto directory = std::filesystem::path(runner.output_directory());
+    const std::string png = (directory / "pressure_thickness.png").string();
+    run_python_plot({"dem", (directory / "timeseries.csv").string(), png, "--title", options.scenario_path});
+    std::printf("  plot: %s\n", png.c_str());
+  }
+}
+
+const RegisterCommand registration([](CLI::App& root) {
+  auto options = std::make_shared<DemOptions>();
+  CLI::App* command = root.add_subcommand("dem", "Generate and calender an ellipsoid packing with the built-in DEM");
+  command->add_option("scenario", options->scenario_path, "Scenario file (TOML), e.g. examples/calendering.toml")
+      ->required();
+  command->add_option("-o,--output", options->output_directory, "Output directory (overrides [output].directory)");
+  command->add_option("-j,--threads", options->threads, "OpenMP threads (results do not depend on it)")
+      ->check(CLI::PositiveNumber);
+  command->add_option("--restart", options->restart_path, "Continue from a checkpoint written by this scenario");
+  command->add_flag("--force", options->force, "Run with a time step above the stability estimate");
+  command->add_flag("--no-plot", options->no_plot, "Skip the PNG (no Python needed)");
+  command->add_flag("-q,--quiet", options->quiet, "No progress output");
+  command->add_option("--max-steps", options->max_steps, "Stop after this many steps and write a checkpoint")
+      ->check(CLI::PositiveNumber);
+  command->callback([options] { run_dem(*options); });
+});
+
+}  // namespace
+}  // namespace ellc::cli

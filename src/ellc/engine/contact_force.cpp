@@ -1,0 +1,68 @@
+#include "ellc/engine/contact_force.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace ellc::engine {
+
+Eigen::Vector3d contact_response(const ContactKinematics& kinematics, const ContactConstants& constants,
+                                 double overlap, double law_force, const ResponseParameters& parameters,
+                                 ContactHistory& history) noexcept {
+  const Eigen::Vector3d& n = kinematics.normal;
+  const double contact_radius = std::sqrt(constants.contact_radius_sq_per_overlap * std::max(overlap, 0.0));
+  const double normal_speed = kinematics.relative_velocity.dot(n);  // > 0 when separating
+  const double normal_stiffness = 2.0 * constants.effective_modulus * contact_radius;
+  const double normal_damping = 2.0 * parameters.damping_ratio * std::sqrt(kinematics.effective_mass * normal_stiffness);
+  const double normal_force = std::max(0.0, law_force - normal_damping * normal_speed);
+
+  // Tangential history spring, carried onto the current tangent plane with its length kept.
+  const Eigen::Vector3d tangential_velocity = kinematics.relative_velocity - normal_speed * n;
+  Eigen::Vector3d& spring = history.tangential_spring;
+  const double spring_length = spring.norm();
+  if (spring_length > 0.0) {
+    spring -= spring.dot(n) * n;
+    const double projected = spring.norm();
+    spring *= projected > 0.0 ? spring_length / projected : 0.0;
+  }
+  spring += tangential_velocity * parameters.dt;
+  const double tangential_stiffness = 8.0 * parameters.shear_modulus * contact_radius;
+  const double tangential_damping =
+      2.0 * parameters.damping_ratio * std::sqrt(kinematics.effective_mass * tangential_stiffness);
+  Eigen::Vector3d tangential = -tangential_stiffness * spring - tangential_damping * tangential_velocity;
+  const double limit = parameters.friction * normal_force;
+  const double magnitude = tangential.norm();
+  if (magnitude > limit) {
+    tangential *= magnitude > 0.0 ? limit / magnitude : 0.0;
+    spring = tangential_stiffness > 0.0
+                 ? Eigen::Vector3d(-(tangential + tangential_damping * tangential_velocity) / tangential_stiffness)
+                 : Eigen::Vector3d::Zero();
+  }
+  return normal_force * n + tangential;
+}
+
+void accumulate_normal_work(ContactHistory& history, double overlap, double law_force) noexcept {
+  history.normal_work += 0.5 * (history.last_force + law_force) * (overlap - history.last_overlap);
+  history.last_overlap = overlap;
+  history.last_force = law_force;
+}
+
+double recoverable_energy(const ContactConstants& constants, double overlap, double max_overlap) noexcept {
+  if (!(overlap > 0.0)) return 0.0;
+  // ∫₀^x C s^{3/2} ds = (2/5) C x^{5/2} for the branch F = C x^{3/2}.
+  const auto energy = [](double coefficient, double x) { return x > 0.0 ? 0.4 * coefficient * x * x * std::sqrt(x) : 0.0; };
+  if (max_overlap <= constants.yield_overlap) return energy(constants.hertz_coefficient, overlap);
+  const UnloadingBranch branch = unloading_branch(constants, std::max(max_overlap, overlap));
+  return energy(branch.unloading_coefficient, overlap - branch.plastic_overlap);
+}
+
+double clear_history(ContactHistory& history) noexcept {
+  const double released = history.normal_work;
+  const bool keep_constants = history.constants_cached;
+  const ContactConstants constants = history.constants;
+  history = ContactHistory{};
+  history.constants_cached = keep_constants;  // sphere pairs: the constants do not change
+  history.constants = constants;
+  return released;
+}
+
+}  // namespace ellc::engine

@@ -1,0 +1,48 @@
+#pragma once
+// Contact response on top of the normal law: viscous normal damping, Mindlin-type tangential
+// spring with Coulomb friction, and the energy bookkeeping of the law force.
+//
+//  * Normal: F_n = max(0, F_law − c_n v_n), c_n = 2 ζ sqrt(m* k_n), k_n = 2 E_e c_c
+//    (the Hertz tangent stiffness at the equivalent contact radius c_c of eq. 9).
+//  * Tangential: ξ += v_t dt on the current tangent plane (rotated, magnitude kept),
+//    F_t = −k_t ξ − c_t v_t, k_t = 8 G_e c_c (Mindlin), c_t = 2 ζ sqrt(m* k_t),
+//    |F_t| ≤ µ F_n; when sliding, ξ is reset to −(F_t + c_t v_t)/k_t.
+//  * F_law is the Becker–Kamlah force from evaluate_contact(), used unchanged.
+
+#include <Eigen/Core>
+
+#include "ellc/engine/contact_history.hpp"
+#include "ellc/law/contact_law.hpp"
+
+namespace ellc::engine {
+
+struct ResponseParameters {
+  double shear_modulus = 0.0;  // G_e = [ (2 − ν_I)/G_I + (2 − ν_J)/G_J ]⁻¹
+  double damping_ratio = 0.0;  // ζ
+  double friction = 0.0;       // µ
+  double dt = 0.0;
+};
+
+struct ContactKinematics {
+  Eigen::Vector3d normal;             // unit, I → J
+  Eigen::Vector3d relative_velocity;  // of J's material point relative to I's, at the contact point
+  double effective_mass = 0.0;        // m_I m_J / (m_I + m_J); m_I against a wall
+};
+
+// Total force on J (normal + tangential). Updates `history.tangential_spring`.
+[[nodiscard]] Eigen::Vector3d contact_response(const ContactKinematics& kinematics, const ContactConstants& constants,
+                                               double overlap, double law_force, const ResponseParameters& parameters,
+                                               ContactHistory& history) noexcept;
+
+// Trapezoidal ∫ F_law dδ of the step from (last_overlap, last_force) to (overlap, force).
+void accumulate_normal_work(ContactHistory& history, double overlap, double law_force) noexcept;
+
+// Elastic energy the law gives back on full unloading from (δ, δ_*): ∫ F dδ along the
+// unloading branch (eq. 49) or along Hertz (eq. 10) when the contact never yielded.
+[[nodiscard]] double recoverable_energy(const ContactConstants& constants, double overlap, double max_overlap) noexcept;
+
+// Starts a fresh history (first overlap) or clears it (separation); returns the normal work
+// the cleared history had accumulated, which the caller books as dissipated.
+double clear_history(ContactHistory& history) noexcept;
+
+}  // namespace ellc::engine

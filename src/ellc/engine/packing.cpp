@@ -1,0 +1,147 @@
+#include "ellc/engine/packing.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+#include <stdexcept>
+#include <unordered_map>
+#include <vector>
+
+#include "ellc/engine/random.hpp"
+
+namespace ellc::engine {
+
+namespace {
+
+struct Candidate {
+  Eigen::Vector3d axes;
+  Eigen::Quaterniond rotation;
+  Eigen::Vector3d centre = Eigen::Vector3d::Zero();
+  double bounding = 0.0;
+};
+
+std::vector<Candidate> draw_particles(const PackingSpec& spec) {
+  Random random(spec.seed);
+  std::vector<Candidate> drawn(spec.count);
+  const double log_low = std::log(spec.aspect_min);
+  const double log_high = std::log(spec.aspect_max);
+  for (auto& particle : drawn) {
+    double deviation = random.normal();
+    deviation = std::clamp(deviation, -2.0, 2.0);
+    const double radius = spec.mean_radius * std::max(0.05, 1.0 + spec.radius_spread * deviation);
+    if (spec.spheres) {
+      particle.axes.setConstant(radius);
+    } else {
+      const Eigen::Vector3d ratios(1.0, std::exp(random.uniform(log_low, log_high)),
+                                   std::exp(random.uniform(log_low, log_high)));
+      particle.axes = ratios * (radius / std::cbrt(ratios.prod()));  // (abc)^{1/3} = r̂
+    }
+    particle.rotation = random.rotation();
+    particle.bounding = particle.axes.maxCoeff();
+  }
+  return drawn;
+}
+
+// Uniform cells with periodic x, y; z unbounded (hashed).
+class InsertionGrid {
+ public:
+  InsertionGrid(const Box& box, double cell) : box_(box) {
+    nx_ = std::max(1, static_cast<int>(box.lx / cell));
+    ny_ = std::max(1, static_cast<int>(box.ly / cell));
+    cell_x_ = box.lx / nx_;
+    cell_y_ = box.ly / ny_;
+    cell_z_ = cell;
+  }
+  void insert(std::size_t index, const Eigen::Vector3d& centre) { cells_[key_of(cell_of(centre))].push_back(index); }
+
+  template <typename Visit>
+  bool any_neighbour(const Eigen::Vector3d& centre, Visit&& visit) const {
+    const auto [ix, iy, iz] = cell_of(centre);
+    std::vector<std::int64_t> seen;
+    for (int dz = -1; dz <= 1; ++dz)
+      for (int dy = -1; dy <= 1; ++dy)
+        for (int dx = -1; dx <= 1; ++dx) {
+          const std::int64_t key = key_of({wrap(ix + dx, nx_), wrap(iy + dy, ny_), iz + dz});
+          if (std::find(seen.begin(), seen.end(), key) != seen.end()) continue;
+          seen.push_back(key);
+          const auto found = cells_.find(key);
+          if (found == cells_.end()) continue;
+          for (std::size_t other : found->second)
+            if (visit(other)) return true;
+        }
+    return false;
+  }
+
+ private:
+  struct Cell {
+    int x, y, z;
+  };
+  static int wrap(int value, int n) { return (value % n + n) % n; }
+  [[nodiscard]] Cell cell_of(const Eigen::Vector3d& centre) const {
+    return {std::clamp(static_cast<int>(std::floor(centre.x() / cell_x_)), 0, nx_ - 1),
+            std::clamp(static_cast<int>(std::floor(centre.y() / cell_y_)), 0, ny_ - 1),
+            static_cast<int>(std::floor(centre.z() / cell_z_))};
+  }
+  [[nodiscard]] std::int64_t key_of(Cell cell) const {
+    return (static_cast<std::int64_t>(cell.z) * ny_ + cell.y) * nx_ + cell.x;
+  }
+  Box box_;
+  int nx_ = 1, ny_ = 1;
+  double cell_x_ = 1.0, cell_y_ = 1.0, cell_z_ = 1.0;
+  std::unordered_map<std::int64_t, std::vector<std::size_t>> cells_;
+};
+
+}  // namespace
+
+ParticleSet generate_packing(const PackingSpec& spec, const Box& box, double floor, const OverlapTest& overlap) {
+  std::vector<Candidate> drawn = draw_particles(spec);
+  ParticleSet particles;
+  if (drawn.empty()) return particles;
+  Random random(spec.seed ^ 0x5eed5eed5eed5eedULL);
+
+  double total_volume = 0.0;
+  double largest = 0.0;
+  for (const auto& particle : drawn) {
+    total_volume += ellipsoid_volume(particle.axes);
+    largest = std::max(largest, particle.bounding);
+  }
+  double height = std::max(total_volume / (spec.insertion_fraction * box.lx * box.ly), 2.5 * largest);
+
+  std::vector<std::size_t> order(drawn.size());
+  std::iota(order.begin(), order.end(), std::size_t{0});
+  std::stable_sort(order.begin(), order.end(),
+                   [&](std::size_t l, std::size_t r) { return drawn[l].bounding > drawn[r].bounding; });
+
+  InsertionGrid grid(box, 2.0 * largest);
+  constexpr int kAttempts = 400;
+  for (std::size_t index : order) {
+    Candidate& particle = drawn[index];
+    for (int attempt = 0;; ++attempt) {
+      if (attempt > 0 && attempt % kAttempts == 0) height *= 1.05;  // region too full: extend it upward
+      if (attempt > 200 * kAttempts) throw std::runtime_error("packing generation: cannot place particle " + std::to_string(index));
+      const double low = floor + particle.bounding;
+      const double high = std::max(low, floor + height - particle.bounding);
+      const Eigen::Vector3d centre(random.uniform(0.0, box.lx), random.uniform(0.0, box.ly), random.uniform(low, high));
+      const bool blocked = grid.any_neighbour(centre, [&](std::size_t other) {
+        const Candidate& placed = drawn[other];
+        Eigen::Vector3d d = placed.centre - centre;
+        d.x() -= box.lx * std::round(d.x() / box.lx);
+        d.y() -= box.ly * std::round(d.y() / box.ly);
+        const double reach = particle.bounding + placed.bounding;
+        if (d.squaredNorm() >= reach * reach) return false;
+        if (!overlap) return true;
+        return overlap(particle.axes, centre, particle.rotation, placed.axes, centre + d, placed.rotation);
+      });
+      if (blocked) continue;
+      particle.centre = centre;
+      grid.insert(index, centre);
+      break;
+    }
+  }
+  for (std::size_t index = 0; index < drawn.size(); ++index)
+    particles.add(static_cast<std::uint32_t>(index), drawn[index].axes, spec.density, drawn[index].centre,
+                  drawn[index].rotation);
+  return particles;
+}
+
+}  // namespace ellc::engine

@@ -1,0 +1,42 @@
+#include "ellc/engine/particles.hpp"
+
+#include <cmath>
+#include <numbers>
+
+namespace ellc::engine {
+
+double ellipsoid_volume(const Eigen::Vector3d& axes) noexcept {
+  return 4.0 / 3.0 * std::numbers::pi * axes.prod();
+}
+
+void ParticleSet::add(std::uint32_t particle_id, const Eigen::Vector3d& axes, double density,
+                      const Eigen::Vector3d& centre, const Eigen::Quaterniond& rotation) {
+  const double m = density * ellipsoid_volume(axes);
+  const Eigen::Vector3d sq = axes.cwiseProduct(axes);
+  id.push_back(particle_id);
+  semi_axes.push_back(axes);
+  mass.push_back(m);
+  inertia.emplace_back(m * (sq.y() + sq.z()) / 5.0, m * (sq.x() + sq.z()) / 5.0, m * (sq.x() + sq.y()) / 5.0);
+  mean_radius.push_back(std::cbrt(axes.prod()));
+  bounding_radius.push_back(axes.maxCoeff());
+  position.push_back(centre);
+  orientation.push_back(rotation.normalized());
+  velocity.emplace_back(Eigen::Vector3d::Zero());
+  angular_velocity.emplace_back(Eigen::Vector3d::Zero());
+  force.emplace_back(Eigen::Vector3d::Zero());
+  torque.emplace_back(Eigen::Vector3d::Zero());
+}
+
+bool ParticleSet::all_spheres() const noexcept {
+  for (const auto& axes : semi_axes)
+    if (axes.x() != axes.y() || axes.x() != axes.z()) return false;
+  return true;
+}
+
+double ParticleSet::total_volume() const noexcept {
+  double volume = 0.0;
+  for (const auto& axes : semi_axes) volume += ellipsoid_volume(axes);
+  return volume;
+}
+
+}  // namespace ellc::engine

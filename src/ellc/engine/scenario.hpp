@@ -1,0 +1,64 @@
+#pragma once
+// A DEM scenario as read from SCENARIO.toml (`ellc dem`): packing generation, settling and
+// calendering, plus the output cadence. Units: µm, µN, µs, ng (docs/engine.md).
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "ellc/engine/packing.hpp"
+#include "ellc/engine/settings.hpp"
+
+namespace ellc::engine {
+
+struct SettleSpec {
+  double gravity = 0.5;    // µm/µs², along −z
+  double drag_rate = 0.5;  // 1/µs, global viscous drag while settling
+  double time = 100.0;     // µs
+};
+
+struct CalenderingSpec {
+  double speed = 0.1;       // µm/µs, top plate moving down
+  double lift_speed = 0.1;  // µm/µs, top plate moving up
+  std::optional<double> target_thickness;  // µm (plate gap)
+  std::optional<double> target_pressure;   // MPa on the top plate
+  double hold_time = 10.0;  // µs
+  double gravity = 0.0;     // µm/µs² during calendering
+  double start_gap = 0.0;   // µm between the highest particle and the plate when it starts
+};
+
+struct OutputSpec {
+  std::string directory = "dem_out";
+  long csv_every = 100;         // steps
+  long vtk_every = 0;           // steps, 0 = only the first and last frame
+  long checkpoint_every = 0;    // steps, 0 = only at the end (and on failure)
+};
+
+struct Scenario {
+  std::string source;             // file name, for messages
+  std::string text;               // the file's text (its hash goes into checkpoints)
+  ContactSettings contact;
+  PackingSpec packing;
+  Box box;
+  double mass_scaling = 1.0;      // density multiplier (quasi-static speed-up), docs/engine.md
+  double material_density = 4.7e-3;  // ng/µm³ before scaling
+  std::optional<double> dt;       // µs; default safety × Rayleigh estimate
+  double time_step_safety = 0.2;
+  double skin = 0.0;              // µm, 0 → automatic
+  double max_speed = 50.0;        // µm/µs: runaway threshold
+  SettleSpec settle;
+  CalenderingSpec calendering;
+  OutputSpec output;
+  std::vector<std::string> warnings;
+};
+
+// Reads and validates; throws InputError naming the field (unknown keys included).
+[[nodiscard]] Scenario read_scenario(const std::string& path);
+[[nodiscard]] Scenario parse_scenario(std::string_view toml_text, const std::string& source);
+
+// The largest bounding radius and the smallest semi-axis the packing spec can produce.
+[[nodiscard]] double largest_bounding_radius(const PackingSpec& spec) noexcept;
+
+}  // namespace ellc::engine

@@ -1,0 +1,197 @@
+// SCENARIO.toml → Scenario. Uses the io layer's TableReader, so every key is checked and every
+// error names its field (InputError → exit code 2 in the CLI).
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+#include "ellc/engine/scenario.hpp"
+#include "ellc/io/case_file.hpp"
+#include "ellc/io/input_error.hpp"
+#include "ellc/io/table_reader.hpp"
+
+namespace ellc::engine {
+
+double largest_bounding_radius(const PackingSpec& spec) noexcept {
+  const double radius = spec.mean_radius * (1.0 + 2.0 * spec.radius_spread);
+  if (spec.spheres) return radius;
+  // Semi-axes r̂ (1, q1, q2) / (q1 q2)^{1/3}; the largest is reached at a corner of the range.
+  double largest = 0.0;
+  for (double q1 : {spec.aspect_min, spec.aspect_max})
+    for (double q2 : {spec.aspect_min, spec.aspect_max})
+      largest = std::max(largest, std::max({1.0, q1, q2}) / std::cbrt(q1 * q2));
+  return radius * largest;
+}
+
+namespace {
+
+double positive_or(TableReader& table, std::string_view key, double fallback) {
+  if (!table.has(key)) return fallback;
+  return table.positive(key);
+}
+
+double non_negative_or(TableReader& table, std::string_view key, double fallback) {
+  if (!table.has(key)) return fallback;
+  return table.non_negative(key);
+}
+
+void read_contact(TableReader& table, ContactSettings& contact) {
+  contact.normal_model =
+      table.choice("normal", {"becker_kamlah", "hertz"}, "becker_kamlah") == "hertz" ? NormalModel::hertz
+                                                                                     : NormalModel::becker_kamlah;
+  contact.damping_ratio = non_negative_or(table, "damping_ratio", contact.damping_ratio);
+  if (contact.damping_ratio >= 1.0) table.fail("damping_ratio", contact.damping_ratio, "a number in [0, 1)");
+  contact.friction = non_negative_or(table, "friction", contact.friction);
+  contact.wall_friction = non_negative_or(table, "wall_friction", contact.wall_friction);
+  table.finish();
+}
+
+void read_packing(TableReader& table, Scenario& scenario) {
+  PackingSpec& spec = scenario.packing;
+  spec.count = static_cast<std::size_t>(table.integer_at_least("count", 1));
+  if (spec.count > 50'000'000) table.fail("count", std::to_string(spec.count), "at most 50000000 particles");
+  spec.mean_radius = table.positive("mean_radius");
+  spec.radius_spread = non_negative_or(table, "radius_spread", 0.0);
+  if (spec.radius_spread >= 0.45) table.fail("radius_spread", spec.radius_spread, "a relative spread in [0, 0.45)");
+  spec.spheres = table.choice("shape", {"ellipsoid", "sphere"}, "ellipsoid") == "sphere";
+  if (const auto aspect = table.optional_numbers("aspect", 2)) {
+    if ((*aspect)[0] <= 0.0 || (*aspect)[1] < (*aspect)[0])
+      table.fail("aspect", "[" + format_number((*aspect)[0]) + ", " + format_number((*aspect)[1]) + "]",
+                 "[min, max] with 0 < min <= max (ratios b/a and c/a)");
+    spec.aspect_min = (*aspect)[0];
+    spec.aspect_max = (*aspect)[1];
+  }
+  if (!spec.spheres && (spec.aspect_min < 0.5 * (1 - 1e-12) || spec.aspect_max > 2.0 * (1 + 1e-12)))
+    scenario.warnings.push_back("packing.aspect extends outside the calibrated range 1:[0.5..2]:[0.5..2] of the "
+                                "transition fits (eq. 52-53); the law still evaluates");
+  spec.seed = static_cast<std::uint64_t>(table.integer_at_least("seed", 0, 1));
+  scenario.material_density = table.positive("density");
+  spec.insertion_fraction = positive_or(table, "insertion_fraction", spec.insertion_fraction);
+  if (spec.insertion_fraction > 0.5) table.fail("insertion_fraction", spec.insertion_fraction, "a solid fraction in (0, 0.5]");
+  table.finish();
+}
+
+void read_box(TableReader& table, Scenario& scenario) {
+  const auto size = table.numbers("size", 2);
+  for (int axis = 0; axis < 2; ++axis)
+    if (size[axis] <= 0.0) table.fail("size[" + std::to_string(axis) + "]", size[axis], "a box length > 0 (µm)");
+  scenario.box = {size[0], size[1]};
+  table.finish();
+}
+
+void read_time(TableReader& table, Scenario& scenario) {
+  if (table.has("dt")) scenario.dt = table.positive("dt");
+  scenario.time_step_safety = positive_or(table, "safety", scenario.time_step_safety);
+  if (scenario.time_step_safety > 1.0) table.fail("safety", scenario.time_step_safety, "a factor in (0, 1]");
+  scenario.mass_scaling = positive_or(table, "mass_scaling", 1.0);
+  if (scenario.mass_scaling < 1.0) table.fail("mass_scaling", scenario.mass_scaling, "a density factor >= 1");
+  scenario.skin = non_negative_or(table, "skin", 0.0);
+  scenario.max_speed = positive_or(table, "max_speed", scenario.max_speed);
+  table.finish();
+}
+
+void read_settle(TableReader& table, SettleSpec& settle) {
+  settle.gravity = non_negative_or(table, "gravity", settle.gravity);
+  settle.drag_rate = non_negative_or(table, "drag_rate", settle.drag_rate);
+  settle.time = non_negative_or(table, "time", settle.time);
+  table.finish();
+}
+
+void read_calendering(TableReader& table, CalenderingSpec& spec) {
+  spec.speed = table.positive("speed");
+  spec.lift_speed = positive_or(table, "lift_speed", spec.speed);
+  if (table.has("target_thickness")) spec.target_thickness = table.number("target_thickness");
+  if (table.has("target_pressure")) spec.target_pressure = table.positive("target_pressure");
+  if (!spec.target_thickness && !spec.target_pressure)
+    table.fail("target_thickness", "missing", "target_thickness (µm) or target_pressure (MPa), or both");
+  if (spec.target_thickness && *spec.target_thickness <= 0.0)
+    table.fail("target_thickness", *spec.target_thickness, "a plate gap > 0 µm (the walls would overlap)");
+  spec.hold_time = non_negative_or(table, "hold_time", spec.hold_time);
+  spec.gravity = non_negative_or(table, "gravity", spec.gravity);
+  spec.start_gap = non_negative_or(table, "start_gap", spec.start_gap);
+  table.finish();
+}
+
+void read_output(TableReader& table, OutputSpec& output) {
+  if (const auto directory = table.optional_string("directory")) output.directory = *directory;
+  output.csv_every = table.integer_at_least("csv_every", 1, output.csv_every);
+  output.vtk_every = table.integer_at_least("vtk_every", 0, output.vtk_every);
+  output.checkpoint_every = table.integer_at_least("checkpoint_every", 0, output.checkpoint_every);
+  table.finish();
+}
+
+// Checks that need several tables at once.
+void cross_check(const Scenario& scenario) {
+  const PackingSpec& spec = scenario.packing;
+  const double largest = largest_bounding_radius(spec);
+  const double skin = scenario.skin > 0.0 ? scenario.skin : 0.1 * largest;
+  const double needed = 2.0 * (2.0 * largest + skin);
+  const double shortest = std::min(scenario.box.lx, scenario.box.ly);
+  if (shortest < needed)
+    throw InputError(scenario.source, "box.size", format_number(shortest),
+                     "box lengths >= " + format_number(needed) +
+                         " µm: twice the reach 2 R_max + skin of the largest particle (packing.mean_radius = " +
+                         format_number(spec.mean_radius) + " µm, bounding radius up to " + format_number(largest) +
+                         " µm); the particle is too large for the periodic box");
+  if (const auto& target = scenario.calendering.target_thickness) {
+    const double solid = static_cast<double>(spec.count) * 4.0 / 3.0 * 3.141592653589793 * std::pow(spec.mean_radius, 3) /
+                         (scenario.box.lx * scenario.box.ly);
+    if (*target <= solid)
+      throw InputError(scenario.source, "calendering.target_thickness", format_number(*target),
+                       "a plate gap > " + format_number(solid) +
+                           " µm, the thickness of the solid alone (the walls would overlap the particles)");
+  }
+}
+
+Scenario read(const toml::table& root_table, const std::string& source, std::string text) {
+  TableReader root(root_table, "", source);
+  Scenario scenario;
+  scenario.source = source;
+  scenario.text = std::move(text);
+  {
+    auto material = root.table("material");
+    scenario.contact.material = read_material(material);
+  }
+  if (auto model = root.optional_table("model")) {
+    const ModelSpec spec = read_model(*model);
+    scenario.contact.hertz = spec.hertz;
+    scenario.contact.law = spec.law;
+  }
+  if (auto contact = root.optional_table("contact")) read_contact(*contact, scenario.contact);
+  {
+    auto box = root.table("box");
+    read_box(box, scenario);
+  }
+  {
+    auto packing = root.table("packing");
+    read_packing(packing, scenario);
+  }
+  if (auto time = root.optional_table("time")) read_time(*time, scenario);
+  if (auto settle = root.optional_table("settle")) read_settle(*settle, scenario.settle);
+  {
+    auto calendering = root.table("calendering");
+    read_calendering(calendering, scenario.calendering);
+  }
+  if (auto output = root.optional_table("output")) read_output(*output, scenario.output);
+  root.finish();
+  scenario.packing.density = scenario.material_density * scenario.mass_scaling;
+  cross_check(scenario);
+  return scenario;
+}
+
+}  // namespace
+
+Scenario read_scenario(const std::string& path) {
+  std::ifstream file(path, std::ios::binary);
+  if (!file) throw InputError(path, "cannot open the scenario file for reading");
+  std::stringstream contents;
+  contents << file.rdbuf();
+  return parse_scenario(contents.str(), path);
+}
+
+Scenario parse_scenario(std::string_view toml_text, const std::string& source) {
+  return read(parse_toml_text(toml_text, source), source, std::string(toml_text));
+}
+
+}  // namespace ellc::engine

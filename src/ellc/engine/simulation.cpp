@@ -1,0 +1,338 @@
+#include "ellc/engine/simulation.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "ellc/engine/broad_phase.hpp"
+#include "ellc/engine/rigid_body.hpp"
+
+namespace ellc::engine {
+
+namespace {
+
+double shear_modulus_of(const Material& material) noexcept {
+  return material.youngs_modulus / (2.0 * (1.0 + material.poisson_ratio));
+}
+
+// Mindlin's G_e = [ (2 − ν_I)/G_I + (2 − ν_J)/G_J ]⁻¹ for one material on both sides.
+double effective_shear_modulus(const Material& material) noexcept {
+  return shear_modulus_of(material) / (2.0 * (2.0 - material.poisson_ratio));
+}
+
+}  // namespace
+
+Simulation::Simulation(const EngineSettings& settings, ParticleSet particles, const std::array<Wall, 2>& walls)
+    : settings_(settings), particles_(std::move(particles)), walls_(walls) {
+  normal_context_ = make_normal_context(settings_.contact);
+  shear_modulus_ = effective_shear_modulus(settings_.contact.material);
+  const std::size_t count = particles_.size();
+  is_sphere_.resize(count);
+  for (std::size_t slot = 0; slot < count; ++slot) {
+    const auto& axes = particles_.semi_axes[slot];
+    is_sphere_[slot] = axes.x() == axes.y() && axes.x() == axes.z();
+  }
+  omega_world_.assign(count, Eigen::Vector3d::Zero());
+  for (int wall = 0; wall < 2; ++wall) {
+    wall_history_[wall].assign(count, ContactHistory{});
+    wall_results_[wall].assign(count, WallResult{});
+  }
+  double mean_bounding = 0.0;
+  for (double radius : particles_.bounding_radius) mean_bounding += radius;
+  mean_bounding /= static_cast<double>(std::max<std::size_t>(count, 1));
+  skin_ = settings_.skin > 0.0 ? settings_.skin : 0.1 * mean_bounding;
+  rebuild_neighbours();
+  compute_forces();
+}
+
+void Simulation::set_wall_position(int wall, double position) { walls_[wall].position = position; }
+
+ResponseParameters Simulation::response_parameters(double friction) const noexcept {
+  return {shear_modulus_, settings_.contact.damping_ratio, friction, settings_.dt};
+}
+
+void Simulation::rebuild_neighbours() {
+  wrap_positions(particles_, settings_.box);
+  std::vector<PairSlot> next = find_candidate_pairs(particles_, settings_.box, skin_);
+  released_work_ += carry_over_history(pairs_, next);
+  pairs_ = std::move(next);
+  pair_results_.assign(pairs_.size(), PairResult{});
+  reference_position_ = particles_.position;
+  ++rebuilds_;
+}
+
+bool Simulation::neighbours_stale() const noexcept {
+  const double limit_sq = 0.25 * skin_ * skin_;
+  const std::size_t count = particles_.size();
+  bool stale = false;
+#pragma omp parallel for reduction(|| : stale) schedule(static)
+  for (std::size_t slot = 0; slot < count; ++slot)
+    stale = stale || (particles_.position[slot] - reference_position_[slot]).squaredNorm() > limit_sq;
+  return stale;
+}
+
+void Simulation::step() {
+  const double half_dt = 0.5 * settings_.dt;
+  kick(half_dt);
+  drift();
+  ++step_;
+  time_ += settings_.dt;
+  if (neighbours_stale()) rebuild_neighbours();
+  compute_forces();
+  kick(half_dt);
+  check_runaway();
+}
+
+void Simulation::kick(double half_dt) noexcept {
+  const std::size_t count = particles_.size();
+  const Eigen::Vector3d gravity = settings_.gravity;
+  const double drag = settings_.drag_rate;
+  auto& p = particles_;
+#pragma omp parallel for schedule(static)
+  for (std::size_t slot = 0; slot < count; ++slot) {
+    p.velocity[slot] += half_dt * (p.force[slot] / p.mass[slot] + gravity - drag * p.velocity[slot]);
+    const Eigen::Vector3d torque_body = p.orientation[slot].conjugate() * p.torque[slot];
+    Eigen::Vector3d& omega = p.angular_velocity[slot];
+    omega += half_dt * (angular_acceleration(p.inertia[slot], omega, torque_body) - drag * omega);
+  }
+}
+
+void Simulation::drift() noexcept {
+  const std::size_t count = particles_.size();
+  const double dt = settings_.dt;
+  auto& p = particles_;
+#pragma omp parallel for schedule(static)
+  for (std::size_t slot = 0; slot < count; ++slot) {
+    p.position[slot] += dt * p.velocity[slot];
+    p.orientation[slot] = advance_orientation(p.orientation[slot], p.angular_velocity[slot], dt);
+  }
+  for (auto& wall : walls_) wall.position += dt * wall.velocity;
+}
+
+void Simulation::compute_forces() {
+  const std::size_t count = particles_.size();
+#pragma omp parallel for schedule(static)
+  for (std::size_t slot = 0; slot < count; ++slot) evaluate_walls_and_reset(slot);
+  evaluate_pairs();
+  accumulate();
+}
+
+// Wall contacts of one particle; also starts the particle's force and torque sums with them.
+void Simulation::evaluate_walls_and_reset(std::size_t slot) {
+  auto& p = particles_;
+  omega_world_[slot] = p.orientation[slot] * p.angular_velocity[slot];
+  Eigen::Vector3d force = Eigen::Vector3d::Zero();
+  Eigen::Vector3d torque = Eigen::Vector3d::Zero();
+  const ResponseParameters parameters = response_parameters(settings_.contact.wall_friction);
+  for (int w = 0; w < 2; ++w) {
+    const Wall& wall = walls_[w];
+    ContactHistory& history = wall_history_[w][slot];
+    WallResult& result = wall_results_[w][slot];
+    result = WallResult{};
+    const double reach = p.bounding_radius[slot] - wall.side * (p.position[slot].z() - wall.position);
+    PairSolution solution;
+    if (reach > 0.0) {
+      const BodyRef body{p.semi_axes[slot], p.position[slot], p.orientation[slot], p.mean_radius[slot]};
+      solution = solve_wall(body, wall, is_sphere_[slot] != 0, history, normal_context_);
+    }
+    if (solution.status == PairStatus::failed) {
+      result.failed = true;
+      continue;
+    }
+    if (solution.status == PairStatus::separated || solution.law.regime == Regime::separated) {
+      if (solution.status == PairStatus::separated && history.active) result.released_work = clear_history(history);
+      if (solution.status == PairStatus::contact) {  // overlapping but below δ_p: no force, history kept
+        history.active = true;
+        history.max_overlap = solution.law.max_overlap;
+        accumulate_normal_work(history, solution.overlap, 0.0);
+        result.contact = true;
+      }
+      continue;
+    }
+    history.active = true;
+    history.max_overlap = solution.law.max_overlap;
+    accumulate_normal_work(history, solution.overlap, solution.law.force);
+    const Eigen::Vector3d lever = solution.point - p.position[slot];
+    ContactKinematics kinematics{solution.normal,
+                                 Eigen::Vector3d(0.0, 0.0, wall.velocity) - p.velocity[slot] - omega_world_[slot].cross(lever),
+                                 p.mass[slot]};
+    const Eigen::Vector3d on_wall =
+        contact_response(kinematics, *solution.constants, solution.overlap, solution.law.force, parameters, history);
+    force -= on_wall;
+    torque -= lever.cross(on_wall);
+    result.force_on_wall = on_wall;
+    result.regime = solution.law.regime;
+    result.contact = true;
+  }
+  p.force[slot] = force;
+  p.torque[slot] = torque;
+}
+
+void Simulation::evaluate_pairs() {
+  const std::size_t count = pairs_.size();
+  const ResponseParameters parameters = response_parameters(settings_.contact.friction);
+  auto& p = particles_;
+#pragma omp parallel for schedule(dynamic, 256)
+  for (std::size_t index = 0; index < count; ++index) {
+    PairSlot& pair = pairs_[index];
+    PairResult& result = pair_results_[index];
+    result = PairResult{};
+    ContactHistory& history = pair.history;
+    const std::uint32_t i = pair.i;
+    const std::uint32_t j = pair.j;
+    const Eigen::Vector3d centre_j = p.position[j] + pair.shift;
+    const double reach = p.bounding_radius[i] + p.bounding_radius[j];
+    PairSolution solution;
+    if ((centre_j - p.position[i]).squaredNorm() < reach * reach) {
+      const BodyRef body_i{p.semi_axes[i], p.position[i], p.orientation[i], p.mean_radius[i]};
+      const BodyRef body_j{p.semi_axes[j], centre_j, p.orientation[j], p.mean_radius[j]};
+      solution = solve_pair(body_i, body_j, is_sphere_[i] != 0 && is_sphere_[j] != 0, history, normal_context_);
+    }
+    if (solution.status == PairStatus::failed) {
+      result.failed = true;
+      continue;
+    }
+    if (solution.status == PairStatus::separated) {
+      if (history.active) result.released_work = clear_history(history);
+      continue;
+    }
+    history.active = true;
+    history.max_overlap = solution.law.max_overlap;
+    accumulate_normal_work(history, solution.overlap, solution.law.force);
+    result.contact = true;
+    result.regime = solution.law.regime;
+    if (solution.law.regime == Regime::separated) continue;  // overlapping below δ_p: no force
+    const Eigen::Vector3d lever_i = solution.point - p.position[i];
+    const Eigen::Vector3d lever_j = solution.point - centre_j;
+    const double mass_i = p.mass[i];
+    const double mass_j = p.mass[j];
+    ContactKinematics kinematics{solution.normal,
+                                 p.velocity[j] + omega_world_[j].cross(lever_j) - p.velocity[i] -
+                                     omega_world_[i].cross(lever_i),
+                                 mass_i * mass_j / (mass_i + mass_j)};
+    const Eigen::Vector3d on_j =
+        contact_response(kinematics, *solution.constants, solution.overlap, solution.law.force, parameters, history);
+    result.force_on_j = on_j;
+    result.torque_i = -lever_i.cross(on_j);
+    result.torque_j = lever_j.cross(on_j);
+  }
+}
+
+// Serial, in the fixed order of the pair list: the only place where contributions meet.
+void Simulation::accumulate() {
+  auto& p = particles_;
+  for (auto& wall : walls_) wall.force.setZero();
+  for (int w = 0; w < 2; ++w) {
+    const auto& results = wall_results_[w];
+    for (std::size_t slot = 0; slot < results.size(); ++slot) {
+      walls_[w].force += results[slot].force_on_wall;
+      released_work_ += results[slot].released_work;
+      failures_ += results[slot].failed ? 1U : 0U;
+    }
+  }
+  for (std::size_t index = 0; index < pairs_.size(); ++index) {
+    const PairResult& result = pair_results_[index];
+    released_work_ += result.released_work;
+    failures_ += result.failed ? 1U : 0U;
+    if (!result.contact) continue;
+    const PairSlot& pair = pairs_[index];
+    p.force[pair.i] -= result.force_on_j;
+    p.force[pair.j] += result.force_on_j;
+    p.torque[pair.i] += result.torque_i;
+    p.torque[pair.j] += result.torque_j;
+  }
+}
+
+void Simulation::check_runaway() const {
+  const auto& p = particles_;
+  const std::size_t count = p.size();
+  const double limit = settings_.max_speed;
+  std::size_t first_bad = count;
+#pragma omp parallel for reduction(min : first_bad) schedule(static)
+  for (std::size_t slot = 0; slot < count; ++slot) {
+    const double speed = p.velocity[slot].norm();
+    const double spin_speed = p.angular_velocity[slot].norm() * p.bounding_radius[slot];
+    const bool bad = !std::isfinite(speed) || !std::isfinite(spin_speed) || !p.position[slot].allFinite() ||
+                     speed > limit || spin_speed > limit;
+    if (bad && slot < first_bad) first_bad = slot;
+  }
+  if (first_bad == count) return;
+  const double speed = p.velocity[first_bad].norm();
+  const std::string what = std::isfinite(speed) && p.position[first_bad].allFinite()
+                               ? "runaway velocity " + std::to_string(speed) + " µm/µs (limit " +
+                                     std::to_string(limit) + ")"
+                               : "a non-finite position or velocity";
+  throw RunawayError("particle " + std::to_string(p.id[first_bad]) + " has " + what + " at step " +
+                         std::to_string(step_) + " (t = " + std::to_string(time_) +
+                         " µs); try a smaller time step or a lower wall speed",
+                     p.id[first_bad], step_);
+}
+
+double Simulation::kinetic_energy() const noexcept {
+  double energy = 0.0;
+  const auto& p = particles_;
+  for (std::size_t slot = 0; slot < p.size(); ++slot) {
+    const Eigen::Vector3d& omega = p.angular_velocity[slot];
+    energy += 0.5 * p.mass[slot] * p.velocity[slot].squaredNorm() + 0.5 * omega.dot(p.inertia[slot].cwiseProduct(omega));
+  }
+  return energy;
+}
+
+double Simulation::plastic_dissipation() const noexcept {
+  double energy = released_work_;
+  const auto remaining = [](const ContactHistory& h) {
+    return h.active ? h.normal_work - recoverable_energy(h.constants, h.last_overlap, h.max_overlap) : 0.0;
+  };
+  for (const auto& pair : pairs_) energy += remaining(pair.history);
+  for (const auto& histories : wall_history_)
+    for (const auto& history : histories) energy += remaining(history);
+  return energy;
+}
+
+ContactCounts Simulation::contact_counts() const noexcept {
+  ContactCounts counts;
+  for (const auto& result : pair_results_) {
+    if (!result.contact) continue;
+    ++counts.particle_contacts;
+    ++counts.by_regime[static_cast<std::size_t>(result.regime)];
+  }
+  for (const auto& results : wall_results_)
+    for (const auto& result : results) {
+      if (!result.contact) continue;
+      ++counts.wall_contacts;
+      ++counts.by_regime[static_cast<std::size_t>(result.regime)];
+    }
+  counts.narrow_phase_failures = failures_;
+  return counts;
+}
+
+double Simulation::wall_pressure(int wall) const noexcept {
+  return -walls_[wall].side * walls_[wall].force.z() / (settings_.box.lx * settings_.box.ly);
+}
+
+double Simulation::porosity() const noexcept {
+  const double volume = settings_.box.lx * settings_.box.ly * gap();
+  return volume > 0.0 ? 1.0 - particles_.total_volume() / volume : 1.0;
+}
+
+std::size_t Simulation::wall_contact_count(int wall) const noexcept {
+  std::size_t count = 0;
+  for (const auto& result : wall_results_[wall]) count += result.contact ? 1U : 0U;
+  return count;
+}
+
+double Simulation::highest_point() const noexcept {
+  double top = -std::numeric_limits<double>::infinity();
+  for (std::size_t slot = 0; slot < particles_.size(); ++slot)
+    top = std::max(top, particles_.position[slot].z() + particles_.bounding_radius[slot]);
+  return top;
+}
+
+double Simulation::lowest_point() const noexcept {
+  double bottom = std::numeric_limits<double>::infinity();
+  for (std::size_t slot = 0; slot < particles_.size(); ++slot)
+    bottom = std::min(bottom, particles_.position[slot].z() - particles_.bounding_radius[slot]);
+  return bottom;
+}
+
+}  // namespace ellc::engine

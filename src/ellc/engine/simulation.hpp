@@ -1,0 +1,134 @@
+#pragma once
+// The DEM world: particles, two z walls, the neighbour list with its contact histories, and one
+// velocity-Verlet step. Broad phase (broad_phase.hpp), narrow phase (pair_geometry.hpp) and the
+// force response (contact_force.hpp) live apart; this class only orders them.
+//
+// Determinism: every contact is evaluated independently (in parallel) into its own slot of a
+// result array; forces are then summed per particle in the fixed order of the sorted pair list.
+// The results therefore do not depend on the number of threads, bit for bit.
+
+#include <array>
+#include <cstdint>
+#include <iosfwd>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "ellc/engine/contact_force.hpp"
+#include "ellc/engine/contact_history.hpp"
+#include "ellc/engine/pair_geometry.hpp"
+#include "ellc/engine/particles.hpp"
+#include "ellc/engine/settings.hpp"
+
+namespace ellc::engine {
+
+// A non-finite or runaway velocity: names the particle (id) and the step.
+class RunawayError : public std::runtime_error {
+ public:
+  RunawayError(const std::string& message, std::uint32_t particle_id, std::uint64_t step)
+      : std::runtime_error(message), particle_id_(particle_id), step_(step) {}
+  [[nodiscard]] std::uint32_t particle_id() const noexcept { return particle_id_; }
+  [[nodiscard]] std::uint64_t step() const noexcept { return step_; }
+
+ private:
+  std::uint32_t particle_id_;
+  std::uint64_t step_;
+};
+
+inline constexpr int kBottomWall = 0;
+inline constexpr int kTopWall = 1;
+inline constexpr int kRegimeCount = 5;  // Regime::separated .. Regime::unloading
+
+struct ContactCounts {
+  std::size_t particle_contacts = 0;  // particle–particle pairs with δ > 0
+  std::size_t wall_contacts = 0;
+  std::array<std::size_t, kRegimeCount> by_regime{};  // all contacts, by the law's regime
+  std::uint64_t narrow_phase_failures = 0;            // since the start of the run
+};
+
+class Simulation {
+ public:
+  Simulation(const EngineSettings& settings, ParticleSet particles, const std::array<Wall, 2>& walls);
+
+  // One velocity-Verlet step. Throws RunawayError (state left at the end of the step).
+  void step();
+
+  [[nodiscard]] const ParticleSet& particles() const noexcept { return particles_; }
+  [[nodiscard]] ParticleSet& particles() noexcept { return particles_; }
+  [[nodiscard]] const std::array<Wall, 2>& walls() const noexcept { return walls_; }
+  // Wall motion is prescribed: the protocol sets velocities (and may place a wall between steps).
+  void set_wall_velocity(int wall, double velocity) noexcept { walls_[wall].velocity = velocity; }
+  void set_wall_position(int wall, double position);
+  [[nodiscard]] EngineSettings& settings() noexcept { return settings_; }
+  [[nodiscard]] const EngineSettings& settings() const noexcept { return settings_; }
+  [[nodiscard]] std::uint64_t step_count() const noexcept { return step_; }
+  [[nodiscard]] double time() const noexcept { return time_; }
+  [[nodiscard]] const std::vector<PairSlot>& pairs() const noexcept { return pairs_; }
+  [[nodiscard]] std::uint64_t neighbour_rebuilds() const noexcept { return rebuilds_; }
+
+  // Observables (serial sums in slot order: deterministic).
+  [[nodiscard]] double kinetic_energy() const noexcept;  // translational + rotational, pJ
+  [[nodiscard]] double plastic_dissipation() const noexcept;  // ∫F_law dδ minus what the law gives back, pJ
+  [[nodiscard]] ContactCounts contact_counts() const noexcept;
+  // Force the particles push a wall with, along the wall's outward direction, per box area (MPa).
+  [[nodiscard]] double wall_pressure(int wall) const noexcept;
+  [[nodiscard]] double gap() const noexcept { return walls_[kTopWall].position - walls_[kBottomWall].position; }
+  [[nodiscard]] double porosity() const noexcept;
+  [[nodiscard]] std::size_t wall_contact_count(int wall) const noexcept;
+  [[nodiscard]] double highest_point() const noexcept;  // max z of the bounding spheres
+  [[nodiscard]] double lowest_point() const noexcept;
+
+  // Full state (particles, walls, contact histories, neighbour list, counters) for restart.
+  void write_state(std::ostream& out) const;
+  void read_state(std::istream& in);
+
+ private:
+  struct PairResult {
+    Eigen::Vector3d force_on_j = Eigen::Vector3d::Zero();
+    Eigen::Vector3d torque_i = Eigen::Vector3d::Zero();
+    Eigen::Vector3d torque_j = Eigen::Vector3d::Zero();
+    double released_work = 0.0;
+    Regime regime = Regime::separated;
+    bool contact = false;
+    bool failed = false;
+  };
+  struct WallResult {
+    Eigen::Vector3d force_on_wall = Eigen::Vector3d::Zero();
+    double released_work = 0.0;
+    Regime regime = Regime::separated;
+    bool contact = false;
+    bool failed = false;
+  };
+
+  void rebuild_neighbours();
+  [[nodiscard]] bool neighbours_stale() const noexcept;
+  void compute_forces();
+  void evaluate_pairs();
+  void evaluate_walls_and_reset(std::size_t slot);
+  void accumulate();
+  void kick(double half_dt) noexcept;
+  void drift() noexcept;
+  void check_runaway() const;
+  [[nodiscard]] ResponseParameters response_parameters(double friction) const noexcept;
+
+  EngineSettings settings_;
+  ParticleSet particles_;
+  std::array<Wall, 2> walls_;
+  NormalContext normal_context_;
+  double shear_modulus_ = 0.0;  // G_e of the particle material with itself
+  std::vector<char> is_sphere_;
+  std::vector<Eigen::Vector3d> omega_world_;
+  std::vector<Eigen::Vector3d> reference_position_;  // at the last neighbour-list build
+  std::vector<PairSlot> pairs_;
+  std::vector<PairResult> pair_results_;
+  std::array<std::vector<ContactHistory>, 2> wall_history_;  // per particle slot
+  std::array<std::vector<WallResult>, 2> wall_results_;
+  double skin_ = 0.0;
+  double released_work_ = 0.0;  // normal work of deleted contacts (all dissipated)
+  std::uint64_t failures_ = 0;
+  std::uint64_t step_ = 0;
+  std::uint64_t rebuilds_ = 0;
+  double time_ = 0.0;
+};
+
+}  // namespace ellc::engine
