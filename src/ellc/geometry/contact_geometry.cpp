@@ -1,0 +1,36 @@
+#include "ellc/geometry/contact_geometry.hpp"
+
+#include <cmath>
+
+namespace ellc {
+
+namespace {
+
+// Gives `side` the principal directions of `partner`, projected on the tangent plane of the
+// outward normal `outward`; keeps its own if the projection degenerates.
+void adopt_directions(SurfaceCurvature& side, const SurfaceCurvature& partner, const Eigen::Vector3d& outward) noexcept {
+  const Eigen::Vector3d projected = partner.direction_1 - partner.direction_1.dot(outward) * outward;
+  const double length = projected.norm();
+  if (!(length > 1e-12)) return;
+  side.direction_1 = projected / length;
+  side.direction_2 = outward.cross(side.direction_1);
+}
+
+}  // namespace
+
+double pair_principal_directions(SurfaceCurvature& side_i, SurfaceCurvature& side_j,
+                                 const Eigen::Vector3d& normal) noexcept {
+  if (side_i.umbilic()) {
+    adopt_directions(side_i, side_j, normal);
+    return 0.0;
+  }
+  if (side_j.umbilic()) {
+    adopt_directions(side_j, side_i, -normal);
+    return 0.0;
+  }
+  const double cosine = std::abs(side_i.direction_1.dot(side_j.direction_1));
+  const double sine = side_i.direction_1.cross(side_j.direction_1).norm();
+  return std::atan2(sine, cosine);
+}
+
+}  // namespace ellc

@@ -1,0 +1,97 @@
+#include "ellc/geometry/ellipsoid.hpp"
+
+#include <numbers>
+
+#include "ellc/geometry/tangent_frame.hpp"
+
+namespace ellc {
+
+Ellipsoid::Ellipsoid(const Eigen::Vector3d& semi_axes, const Pose& pose) noexcept
+    : semi_axes_(semi_axes), pose_(pose) {
+  const double quaternion_norm = pose_.orientation.norm();
+  const bool quaternion_ok = std::isfinite(quaternion_norm) && quaternion_norm > 0.0;
+  if (quaternion_ok) {
+    pose_.orientation.coeffs() /= quaternion_norm;
+  } else {
+    pose_.orientation = Eigen::Quaterniond::Identity();
+  }
+  valid_ = quaternion_ok && semi_axes_.allFinite() && (semi_axes_.array() > 0.0).all() && pose_.position.allFinite();
+  rotation_ = pose_.orientation.toRotationMatrix();
+  shape_diagonal_ = semi_axes_.array().square().inverse();
+  inverse_shape_ = rotation_ * semi_axes_.array().square().matrix().asDiagonal() * rotation_.transpose();
+  inverse_shape_ = 0.5 * (inverse_shape_ + inverse_shape_.transpose()).eval();  // exactly symmetric
+}
+
+Eigen::Vector3d Ellipsoid::support_point(const Eigen::Vector3d& direction) const noexcept {
+  const Eigen::Vector3d image = inverse_shape_ * direction;
+  return pose_.position + image / std::sqrt(direction.dot(image));
+}
+
+Eigen::Vector3d Ellipsoid::surface_point_with_normal(const Eigen::Vector3d& world_normal) const noexcept {
+  return support_point(world_normal);  // scale-free: S n / sqrt(nᵀ S n) does not depend on |n|
+}
+
+double Ellipsoid::support_radius(const Eigen::Vector3d& unit_direction) const noexcept {
+  return std::sqrt(unit_direction.dot(inverse_shape_ * unit_direction));
+}
+
+SurfaceCurvature Ellipsoid::body_curvature(const Eigen::Vector3d& body_normal, double gradient_norm) const noexcept {
+  // In the tangent frame (t1, t2) of n the shape operator is tᵢᵀ M tⱼ / |M x| (the factors 2 of
+  // ∇F = 2 M x and ∇²F = 2 M cancel).
+  const auto [t1, t2] = geometry_detail::tangent_frame(body_normal);
+  const Eigen::Vector3d m_t1 = shape_diagonal_.cwiseProduct(t1);
+  const Eigen::Vector3d m_t2 = shape_diagonal_.cwiseProduct(t2);
+  const double inverse_norm = 1.0 / gradient_norm;
+  const auto eigen = geometry_detail::symmetric_eigen2(t1.dot(m_t1) * inverse_norm, t2.dot(m_t1) * inverse_norm,
+                                                       t2.dot(m_t2) * inverse_norm, SurfaceCurvature::umbilic_tolerance);
+  const Eigen::Vector3d direction_1 = eigen.x * t1 + eigen.y * t2;
+  SurfaceCurvature curvature;
+  curvature.kappa_1 = eigen.high;
+  curvature.kappa_2 = eigen.low;
+  curvature.direction_1 = rotation_ * direction_1;
+  curvature.direction_2 = rotation_ * body_normal.cross(direction_1);
+  return curvature;
+}
+
+SurfaceCurvature Ellipsoid::curvature_with_normal(const Eigen::Vector3d& world_normal) const noexcept {
+  const Eigen::Vector3d body_normal = (rotation_.transpose() * world_normal).normalized();
+  // At the point x = D² n / |D n| the gradient M x is n / |D n|.
+  const double stretched = semi_axes_.cwiseProduct(body_normal).norm();
+  return body_curvature(body_normal, 1.0 / stretched);
+}
+
+SurfaceCurvature Ellipsoid::curvature_at(const Eigen::Vector3d& world_surface_point) const noexcept {
+  Eigen::Vector3d body_point = to_body(world_surface_point);
+  const double level = body_point.dot(shape_diagonal_.cwiseProduct(body_point));
+  if (level > 0.0) body_point /= std::sqrt(level);  // radial projection onto the surface
+  else body_point = semi_axes_.x() * Eigen::Vector3d::UnitX();  // the centre itself: any point will do
+  const Eigen::Vector3d gradient = shape_diagonal_.cwiseProduct(body_point);
+  const double gradient_norm = gradient.norm();
+  return body_curvature(gradient / gradient_norm, gradient_norm);
+}
+
+Eigen::Vector3d Ellipsoid::normal_at(const Eigen::Vector3d& world_point) const noexcept {
+  const Eigen::Vector3d gradient = shape_diagonal_.cwiseProduct(to_body(world_point));
+  const double norm = gradient.norm();
+  if (!(norm > 0.0)) return rotation_.col(0);
+  return rotation_ * (gradient / norm);
+}
+
+double Ellipsoid::implicit_value(const Eigen::Vector3d& world_point) const noexcept {
+  const Eigen::Vector3d body_point = to_body(world_point);
+  return body_point.dot(shape_diagonal_.cwiseProduct(body_point)) - 1.0;
+}
+
+OrientedBox Ellipsoid::bounding_box() const noexcept { return {pose_.position, rotation_, semi_axes_}; }
+
+AxisAlignedBox Ellipsoid::axis_aligned_bounds() const noexcept {
+  // The support radius along world axis k is sqrt(S_kk).
+  const Eigen::Vector3d half = inverse_shape_.diagonal().cwiseSqrt();
+  return {pose_.position - half, pose_.position + half};
+}
+
+double Ellipsoid::volume() const noexcept { return 4.0 / 3.0 * std::numbers::pi * semi_axes_.prod(); }
+
+double Ellipsoid::mean_radius() const noexcept { return std::cbrt(semi_axes_.prod()); }
+
+}  // namespace ellc

@@ -1,0 +1,111 @@
+#pragma once
+// A posed ellipsoid: semi-axes (a, b, c) along its body x, y, z axes, a centre and a unit
+// quaternion (body → world). The surface is the implicit x_bᵀ M x_b = 1 with M = diag(a⁻², b⁻², c⁻²)
+// in the body frame; everything here (normals, support points, curvatures) follows from the
+// gradient 2 M x_b and the Hessian 2 M of that implicit function, so no point of the surface is
+// special (unlike the paper's x(y, z) parametrisation, Appendix A, which breaks down at x = 0).
+//
+// Value type. The constructor caches the rotation matrix and the world-frame inverse shape matrix
+// S = R D² Rᵀ (D = diag(a, b, c)), so every query below is a few fixed-size products: no
+// allocation, noexcept. An ellipsoid built from non-finite or non-positive data is !valid(); the
+// narrow phase reports such pairs as failed instead of computing with them.
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+
+#include <cmath>
+
+#include "ellc/hertz/elliptic_hertz.hpp"
+
+namespace ellc {
+
+struct Pose {
+  Eigen::Vector3d position = Eigen::Vector3d::Zero();
+  Eigen::Quaterniond orientation = Eigen::Quaterniond::Identity();  // body → world
+};
+
+// Principal curvatures (1/length, > 0 on an ellipsoid, 0 on a wall) with κ1 ≥ κ2 and their unit
+// tangent directions in the world frame; direction_2 = normal × direction_1.
+struct SurfaceCurvature {
+  double kappa_1 = 0.0;
+  double kappa_2 = 0.0;
+  Eigen::Vector3d direction_1 = Eigen::Vector3d::UnitX();
+  Eigen::Vector3d direction_2 = Eigen::Vector3d::UnitY();
+
+  [[nodiscard]] PrincipalCurvatures principal() const noexcept { return {kappa_1, kappa_2}; }
+  // κ1 − κ2 below this fraction of κ1 + κ2: an umbilic, where every tangent direction is principal.
+  static constexpr double umbilic_tolerance = 1e-11;
+  [[nodiscard]] bool umbilic() const noexcept {
+    return kappa_1 - kappa_2 <= umbilic_tolerance * (std::abs(kappa_1) + std::abs(kappa_2));
+  }
+};
+
+// Box with centre, orthonormal axes (columns, world frame) and half extents along them.
+struct OrientedBox {
+  Eigen::Vector3d center = Eigen::Vector3d::Zero();
+  Eigen::Matrix3d axes = Eigen::Matrix3d::Identity();
+  Eigen::Vector3d half_extents = Eigen::Vector3d::Zero();
+};
+
+// World-axis-aligned bounds (for a broad phase): the tightest box around the ellipsoid.
+struct AxisAlignedBox {
+  Eigen::Vector3d lower = Eigen::Vector3d::Zero();
+  Eigen::Vector3d upper = Eigen::Vector3d::Zero();
+};
+
+class Ellipsoid {
+ public:
+  // The quaternion is normalised here; a zero or non-finite quaternion, or semi-axes that are
+  // not finite and > 0, make the ellipsoid !valid() (its queries still return finite numbers).
+  Ellipsoid(const Eigen::Vector3d& semi_axes, const Pose& pose = {}) noexcept;  // NOLINT: implicit by design of the API
+
+  [[nodiscard]] const Eigen::Vector3d& semi_axes() const noexcept { return semi_axes_; }
+  [[nodiscard]] const Pose& pose() const noexcept { return pose_; }
+  [[nodiscard]] const Eigen::Vector3d& center() const noexcept { return pose_.position; }
+  // Body → world rotation; its columns are the body axes in the world frame.
+  [[nodiscard]] const Eigen::Matrix3d& rotation() const noexcept { return rotation_; }
+  // S = R D² Rᵀ: the support point in direction n is c + S n / sqrt(nᵀ S n).
+  [[nodiscard]] const Eigen::Matrix3d& inverse_shape() const noexcept { return inverse_shape_; }
+  [[nodiscard]] bool valid() const noexcept { return valid_; }
+
+  // The surface point whose outward unit normal is `world_normal` (normalised here).
+  [[nodiscard]] Eigen::Vector3d surface_point_with_normal(const Eigen::Vector3d& world_normal) const noexcept;
+  // The point of the body farthest along `direction` (any length > 0): the same point.
+  [[nodiscard]] Eigen::Vector3d support_point(const Eigen::Vector3d& direction) const noexcept;
+  // h(n) − n·c = sqrt(nᵀ S n) for a unit n: how far the body reaches from its centre along n.
+  [[nodiscard]] double support_radius(const Eigen::Vector3d& unit_direction) const noexcept;
+
+  // Principal curvatures and directions at a surface point. The point is first pulled radially
+  // onto the surface, so points a rounding error off the surface are fine. Shape operator
+  // W = P (∇²F) P / |∇F| of F = x_bᵀ M x_b − 1 restricted to the tangent plane (P = I − n nᵀ).
+  // At an umbilic (κ1 = κ2 to SurfaceCurvature::umbilic_tolerance) the directions are the
+  // tangent frame of the normal (deterministic, never NaN).
+  [[nodiscard]] SurfaceCurvature curvature_at(const Eigen::Vector3d& world_surface_point) const noexcept;
+  // The same at the surface point with outward unit normal `world_normal` (cheaper: no projection).
+  [[nodiscard]] SurfaceCurvature curvature_with_normal(const Eigen::Vector3d& world_normal) const noexcept;
+  // Outward unit normal at (the radial projection onto the surface of) a point.
+  [[nodiscard]] Eigen::Vector3d normal_at(const Eigen::Vector3d& world_point) const noexcept;
+  // x_bᵀ M x_b − 1: < 0 inside, 0 on the surface, > 0 outside.
+  [[nodiscard]] double implicit_value(const Eigen::Vector3d& world_point) const noexcept;
+
+  [[nodiscard]] double bounding_radius() const noexcept { return semi_axes_.maxCoeff(); }  // sphere at the centre
+  [[nodiscard]] OrientedBox bounding_box() const noexcept;
+  [[nodiscard]] AxisAlignedBox axis_aligned_bounds() const noexcept;
+  [[nodiscard]] double volume() const noexcept;       // (4/3) π a b c
+  [[nodiscard]] double mean_radius() const noexcept;  // r̂ = (a b c)^{1/3}, paper eq. (50)
+
+ private:
+  [[nodiscard]] Eigen::Vector3d to_body(const Eigen::Vector3d& world_point) const noexcept {
+    return rotation_.transpose() * (world_point - pose_.position);
+  }
+  [[nodiscard]] SurfaceCurvature body_curvature(const Eigen::Vector3d& body_normal, double gradient_norm) const noexcept;
+
+  Eigen::Vector3d semi_axes_;
+  Pose pose_;
+  Eigen::Matrix3d rotation_;
+  Eigen::Matrix3d inverse_shape_;
+  Eigen::Vector3d shape_diagonal_;  // M = diag(a⁻², b⁻², c⁻²), body frame
+  bool valid_ = false;
+};
+
+}  // namespace ellc

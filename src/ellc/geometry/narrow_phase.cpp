@@ -1,0 +1,239 @@
+#include "ellc/geometry/narrow_phase.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "ellc/geometry/contact_function.hpp"
+#include "ellc/geometry/tangent_frame.hpp"
+
+namespace ellc {
+
+namespace {
+
+constexpr int kMaxNewtonSteps = 40;
+constexpr double kGradientTolerance = 1e-14;  // |tangential gradient| / (ρ_I + ρ_J)
+constexpr double kFinalStep = 1e-13;          // a Newton step this small is taken and ends the solve
+constexpr double kMaxStep = 0.5;              // radians per Newton step
+constexpr double kFullStep = 1e-7;            // below this the Newton step is taken without a line search
+
+// The overlap along a unit n and its gradient p_I(n) − p_J(n).
+struct AlongNormal {
+  Eigen::Vector3d normal;
+  Eigen::Vector3d arm_i;  // p_I − c_I
+  Eigen::Vector3d arm_j;  // c_J − p_J
+  double reach_i;         // ρ_I(n)
+  double reach_j;         // ρ_J(n)
+  double overlap;         // g(n)
+  Eigen::Vector3d gradient;
+};
+
+struct PairData {
+  const Eigen::Matrix3d& shape_i;
+  const Eigen::Matrix3d& shape_j;
+  Eigen::Vector3d offset;  // r = c_J − c_I
+
+  [[nodiscard]] AlongNormal along(const Eigen::Vector3d& unit_normal) const noexcept {
+    AlongNormal value;
+    value.normal = unit_normal;
+    const Eigen::Vector3d image_i = shape_i * unit_normal;
+    const Eigen::Vector3d image_j = shape_j * unit_normal;
+    value.reach_i = std::sqrt(unit_normal.dot(image_i));
+    value.reach_j = std::sqrt(unit_normal.dot(image_j));
+    value.arm_i = image_i / value.reach_i;
+    value.arm_j = image_j / value.reach_j;
+    value.overlap = value.reach_i + value.reach_j - unit_normal.dot(offset);
+    value.gradient = value.arm_i + value.arm_j - offset;
+    return value;
+  }
+};
+
+struct Solve {
+  AlongNormal at;
+  int steps = 0;
+  bool converged = false;
+};
+
+// Tangential Hessian of ρ(n) for one body: (tₐᵀ S t_b − (tₐ·a)(t_b·a)) / ρ, a = S n / ρ.
+struct Hessian2 {
+  double h11 = 0.0;
+  double h12 = 0.0;
+  double h22 = 0.0;
+};
+
+Hessian2 reach_hessian(const Eigen::Matrix3d& shape, const Eigen::Vector3d& arm, double reach,
+                       const geometry_detail::TangentFrame& frame) noexcept {
+  const Eigen::Vector3d shape_t1 = shape * frame.t1;
+  const Eigen::Vector3d shape_t2 = shape * frame.t2;
+  const double a1 = frame.t1.dot(arm);
+  const double a2 = frame.t2.dot(arm);
+  const double inverse = 1.0 / reach;
+  return {(frame.t1.dot(shape_t1) - a1 * a1) * inverse, (frame.t2.dot(shape_t1) - a1 * a2) * inverse,
+          (frame.t2.dot(shape_t2) - a2 * a2) * inverse};
+}
+
+// Damped Newton on the unit sphere for a local minimum of g. Monotone in g.
+Solve common_normal(const PairData& pair, const Eigen::Vector3d& start) noexcept {
+  Solve solve;
+  solve.at = pair.along(start.normalized());
+  const double scale = solve.at.reach_i + solve.at.reach_j;
+  const double gradient_tolerance = kGradientTolerance * scale;
+  while (true) {
+    const AlongNormal& at = solve.at;
+    const auto frame = geometry_detail::tangent_frame(at.normal);
+    const double g1 = frame.t1.dot(at.gradient);
+    const double g2 = frame.t2.dot(at.gradient);
+    const double gradient_norm = std::hypot(g1, g2);
+    if (!std::isfinite(gradient_norm)) return solve;
+    if (gradient_norm <= gradient_tolerance) {
+      solve.converged = true;
+      return solve;
+    }
+    if (solve.steps == kMaxNewtonSteps) return solve;
+    ++solve.steps;
+
+    // Riemannian Hessian on the sphere: ∇²ρ_I + ∇²ρ_J (tangential) − g I.
+    const Hessian2 hi = reach_hessian(pair.shape_i, at.arm_i, at.reach_i, frame);
+    const Hessian2 hj = reach_hessian(pair.shape_j, at.arm_j, at.reach_j, frame);
+    const double h11 = hi.h11 + hj.h11 - at.overlap;
+    const double h12 = hi.h12 + hj.h12;
+    const double h22 = hi.h22 + hj.h22 - at.overlap;
+    // Levenberg shift where the Hessian is not safely positive definite.
+    const double size = std::abs(h11) + std::abs(h22) + std::abs(h12);
+    const double lowest = 0.5 * (h11 + h22) - std::hypot(0.5 * (h11 - h22), h12);
+    const double shift = lowest > 1e-8 * size ? 0.0 : 1e-3 * size - lowest + 1e-300;
+    const double d11 = h11 + shift;
+    const double d22 = h22 + shift;
+    const double determinant = d11 * d22 - h12 * h12;
+    double s1 = -(d22 * g1 - h12 * g2) / determinant;
+    double s2 = -(d11 * g2 - h12 * g1) / determinant;
+    double length = std::hypot(s1, s2);
+    if (!std::isfinite(length)) return solve;
+    if (length > kMaxStep) {
+      s1 *= kMaxStep / length;
+      s2 *= kMaxStep / length;
+      length = kMaxStep;
+    }
+    if (length < kFullStep && shift == 0.0) {  // quadratic convergence region: no line search
+      solve.at = pair.along((at.normal + s1 * frame.t1 + s2 * frame.t2).normalized());
+      if (length <= kFinalStep) {  // the error left is O(length²): at the rounding floor
+        solve.converged = true;
+        return solve;
+      }
+      continue;
+    }
+    bool accepted = false;
+    for (int halving = 0; halving < 40 && !accepted; ++halving) {
+      const AlongNormal trial = pair.along((at.normal + s1 * frame.t1 + s2 * frame.t2).normalized());
+      if (trial.overlap <= at.overlap + 1e-15 * scale) {
+        solve.at = trial;
+        accepted = true;
+      }
+      s1 *= 0.5;
+      s2 *= 0.5;
+    }
+    if (!accepted) return solve;
+  }
+}
+
+void fill_support_geometry(const Ellipsoid& body_i, const Ellipsoid& body_j, const AlongNormal& at,
+                           ContactGeometry& geometry) noexcept {
+  geometry.normal = at.normal;
+  geometry.overlap = at.overlap;
+  geometry.surface_point_i = body_i.center() + at.arm_i;
+  geometry.surface_point_j = body_j.center() - at.arm_j;
+  geometry.point = 0.5 * (geometry.surface_point_i + geometry.surface_point_j);
+}
+
+NarrowPhaseResult separated(const Ellipsoid& body_i, const Ellipsoid& body_j, const AlongNormal& at) noexcept {
+  NarrowPhaseResult result;
+  result.status = NarrowPhaseStatus::separated;
+  fill_support_geometry(body_i, body_j, at, result.geometry);
+  result.warm_start = {{at.normal.x(), at.normal.y(), at.normal.z()}, true};
+  return result;
+}
+
+// A converged common normal that is physical: n points from I to J (else the overlap exceeds
+// the bodies' reach along n, the "far side" stationary point) and everything is finite.
+bool physical(const Solve& solve, const Eigen::Vector3d& offset) noexcept {
+  return solve.converged && solve.at.normal.dot(offset) > 0.0 && std::isfinite(solve.at.overlap) &&
+         solve.at.arm_i.allFinite() && solve.at.arm_j.allFinite();
+}
+
+NarrowPhaseResult finish(const Ellipsoid& body_i, const Ellipsoid& body_j, const AlongNormal& at) noexcept {
+  if (!(at.overlap > 0.0)) return separated(body_i, body_j, at);
+  NarrowPhaseResult result;
+  result.status = NarrowPhaseStatus::contact;
+  ContactGeometry& geometry = result.geometry;
+  fill_support_geometry(body_i, body_j, at, geometry);
+  geometry.curvature_i = body_i.curvature_with_normal(at.normal);
+  geometry.curvature_j = body_j.curvature_with_normal(-at.normal);
+  geometry.alpha = pair_principal_directions(geometry.curvature_i, geometry.curvature_j, at.normal);
+  result.warm_start = {{at.normal.x(), at.normal.y(), at.normal.z()}, true};
+  return result;
+}
+
+}  // namespace
+
+NarrowPhaseResult ellipsoid_contact(const Ellipsoid& body_i, const Ellipsoid& body_j,
+                                    const NarrowPhaseWarmStart* warm) noexcept {
+  NarrowPhaseResult failure;
+  if (!body_i.valid() || !body_j.valid()) return failure;
+  const PairData pair{body_i.inverse_shape(), body_j.inverse_shape(), body_j.center() - body_i.center()};
+  const double distance = pair.offset.norm();
+  const Eigen::Vector3d centre_line = distance > 0.0 ? Eigen::Vector3d(pair.offset / distance) : body_i.rotation().col(0);
+  failure.geometry.normal = centre_line;
+
+  if (distance > body_i.bounding_radius() + body_j.bounding_radius())  // bounding spheres apart
+    return separated(body_i, body_j, pair.along(centre_line));
+
+  int steps = 0;
+  if (warm != nullptr && warm->valid) {
+    const Eigen::Vector3d start(warm->normal[0], warm->normal[1], warm->normal[2]);
+    const double start_norm = start.norm();
+    if (std::isfinite(start_norm) && start_norm > 0.0) {
+      const AlongNormal at_start = pair.along(start / start_norm);
+      if (at_start.overlap < 0.0) return separated(body_i, body_j, at_start);  // still a separating axis
+      const Solve solve = common_normal(pair, at_start.normal);
+      steps += solve.steps;
+      if (physical(solve, pair.offset)) {
+        NarrowPhaseResult result = finish(body_i, body_j, solve.at);
+        result.iterations = steps;
+        return result;
+      }
+    }
+  }
+
+  // Cold start (or fallback): the Perram–Wertheim contact normal; concentric bodies use I's
+  // thinnest axis.
+  int contact_function_iterations = 0;
+  Eigen::Vector3d start = centre_line;
+  if (distance > 0.0) {
+    const ContactFunctionResult contact_function = perram_wertheim(body_i, body_j);
+    contact_function_iterations = contact_function.iterations;
+    if (contact_function.separated) {
+      NarrowPhaseResult result = separated(body_i, body_j, pair.along(contact_function.normal));
+      result.contact_function_iterations = contact_function_iterations;
+      result.cold_start = true;
+      result.iterations = steps;
+      return result;
+    }
+    start = contact_function.normal;
+  } else {
+    Eigen::Index thinnest = 0;
+    body_i.semi_axes().minCoeff(&thinnest);
+    start = body_i.rotation().col(thinnest);
+  }
+  Solve solve = common_normal(pair, start);
+  steps += solve.steps;
+  if (!physical(solve, pair.offset) && distance > 0.0) {  // last resort: from the line of centres
+    solve = common_normal(pair, centre_line);
+    steps += solve.steps;
+  }
+  NarrowPhaseResult result = physical(solve, pair.offset) ? finish(body_i, body_j, solve.at) : failure;
+  result.iterations = steps;
+  result.contact_function_iterations = contact_function_iterations;
+  result.cold_start = true;
+  return result;
+}
+
+}  // namespace ellc

@@ -1,0 +1,30 @@
+#pragma once
+// From contact geometry straight to the normal force: the curvatures and α of the geometry go
+// through make_contact_constants (eq. 5–10, 50–54) and evaluate_contact (the Becker–Kamlah law)
+// unchanged, so a tip-to-tip geometry gives exactly the numbers of `ellc curve`.
+
+#include <Eigen/Core>
+
+#include "ellc/geometry/contact_geometry.hpp"
+#include "ellc/hertz/elliptic_hertz.hpp"
+#include "ellc/law/contact_constants.hpp"
+#include "ellc/law/contact_law.hpp"
+#include "ellc/material/material.hpp"
+
+namespace ellc {
+
+struct NormalContact {
+  Eigen::Vector3d force_on_j = Eigen::Vector3d::Zero();  // F n: pushes J away from I
+  Eigen::Vector3d application_point = Eigen::Vector3d::Zero();  // the contact point
+  LawResult law;               // force magnitude, new δ_*, regime
+  ContactConstants constants;  // of this configuration
+};
+
+// `mean_radius_sum` = r̂^I + r̂^J (eq. 50); for a wall use wall_mean_radius_sum(). `max_overlap` is
+// the contact's δ_* before this step (0 for a fresh contact); store law.max_overlap afterwards.
+// A geometry with overlap ≤ 0 gives zero force (regime separated).
+[[nodiscard]] NormalContact normal_contact(const ContactGeometry& geometry, const ContactMaterial& material,
+                                           double mean_radius_sum, HertzMode mode,
+                                           const LawParameters& parameters, double max_overlap) noexcept;
+
+}  // namespace ellc
