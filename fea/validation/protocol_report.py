@@ -5,6 +5,7 @@ from .curves import law_forces
 from .data import load_run
 from .errors import force_errors
 from .plotting import figure, save
+from .tables import markdown_table, pct
 
 CASES = {"paper_case1": "case 1 (paper: mean error 1.01 %)", "paper_case2": "case 2 (paper: mean error 0.59 %)"}
 
@@ -40,11 +41,8 @@ def plot_protocols(results: dict, suffix: str = "") -> str:
 
 
 def protocol_table(results: dict) -> list[str]:
-    lines = ["| case | Hertz | source | mean rel. error | max rel. error | mean |ΔF|/F_max | max |ΔF|/F_max |",
-             "| --- | --- | --- | ---: | ---: | ---: | ---: |"]
-    for name, entry in results.items():
-        for mode in ("hale", "exact"):
-            e = entry[mode]
-            lines.append(f"| {name} | {mode} | {e['source']} | {100 * e['mean_rel']:.2f} % | {100 * e['max_rel']:.2f} % | "
-                         f"{100 * e['mean_of_peak']:.2f} % | {100 * e['max_of_peak']:.2f} % |")
-    return lines
+    body = [[name, mode, e["source"], pct(e["mean_rel"]), pct(e["max_rel"]), pct(e["mean_of_peak"]),
+             pct(e["max_of_peak"])]
+            for name, entry in results.items() for mode in ("hale", "exact") if (e := entry[mode])]
+    return markdown_table(["case", "Hertz", "source", "mean rel. error", "max rel. error",
+                           "mean of F_max", "max of F_max"], "lllrrrr", body)

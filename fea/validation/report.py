@@ -14,6 +14,7 @@ from . import calibration_report as cal
 from .elastic_report import elastic_errors, elastic_table, plot_elastic
 from .law_oracle import PAPER
 from .plotting import REPO
+from .tables import markdown_table, pct
 from .protocol_report import plot_protocols, protocol_results, protocol_table
 
 DOC = os.path.join(REPO, "docs", "validation.md")
@@ -39,24 +40,19 @@ def _constants_table(ours: dict, free: dict, n_best: float) -> list[str]:
 
 
 def _case_table(rows: list[dict]) -> list[str]:
-    out = ["| case | R_e/r̂ | δ_end/δ_Y | λ_max | ε_max | plateau | rms force error | n free: λ_max, ε_max, n |",
-           "| --- | ---: | ---: | ---: | ---: | --- | ---: | --- |"]
-    for r in rows:
-        f, g = r["fixed"], r["free"]
-        out.append(f"| {r['run'].name} | {r['x']:.3f} | {r['max_over_yield']:.1f} | {f.lam_max:.2f} | "
-                   f"{f.eps_max:.2f} | {'yes' if f.plateau else 'no'} | {100 * f.rms:.2f} % | "
-                   f"{g.lam_max:.2f}, {g.eps_max:.2f}, {g.n:.2f} |")
-    return out
+    body = [[r["run"].name, f"{r['x']:.3f}", f"{r['max_over_yield']:.1f}", f"{r['fixed'].lam_max:.2f}",
+             f"{r['fixed'].eps_max:.2f}", "yes" if r["fixed"].plateau else "no", pct(r["fixed"].rms),
+             f"{r['free'].lam_max:.2f}, {r['free'].eps_max:.2f}, {r['free'].n:.2f}"] for r in rows]
+    return markdown_table(["case", "R_e/r̂", "δ_end/δ_Y", "λ_max", "ε_max", "plateau", "rms force error",
+                           "n free: λ_max, ε_max, n"], "lrrrrlrl", body)
 
 
 def _effect_table(effect: list[dict]) -> list[str]:
-    out = ["| case | law vs FE, paper constants: mean / max | ours: mean / max | max change of force |",
-           "| --- | ---: | ---: | ---: |"]
-    for e in effect:
-        p, o = e["paper"], e["ours"]
-        out.append(f"| {e['name']} | {100 * p['mean_rel']:.2f} % / {100 * p['max_rel']:.2f} % | "
-                   f"{100 * o['mean_rel']:.2f} % / {100 * o['max_rel']:.2f} % | {100 * e['max_change']:.2f} % |")
-    return out
+    body = [[e["name"], f"{pct(e['paper']['mean_rel'])} / {pct(e['paper']['max_rel'])}",
+             f"{pct(e['ours']['mean_rel'])} / {pct(e['ours']['max_rel'])}", pct(e["max_change"])]
+            for e in effect]
+    return markdown_table(["case", "law vs FE, paper constants: mean / max", "ours: mean / max",
+                           "largest change of the force"], "lrrr", body)
 
 
 def main() -> int:
