@@ -4,7 +4,7 @@ from __future__ import annotations
 import numpy as np
 
 
-def force_errors(law: np.ndarray, fe: np.ndarray, floor: float = 0.02) -> dict:
+def force_errors(law: np.ndarray, fe: np.ndarray, floor: float = 0.1) -> dict:
     """mean/max of |F_law - F_FE| / F_FE over points with F_FE > floor * max F_FE, and
     mean/max of |F_law - F_FE| / max F_FE over all points (fair near separation)."""
     law, fe = np.asarray(law, float), np.asarray(fe, float)

@@ -1,6 +1,8 @@
 """The paper's case 1 and case 2 protocols: FE against the law (Hale and exact)."""
 from __future__ import annotations
 
+import numpy as np
+
 from .curves import law_forces
 from .data import load_run
 from .errors import force_errors
@@ -24,17 +26,26 @@ def protocol_results(constants: dict | None = None) -> dict:
     return out
 
 
-def plot_protocols(results: dict, suffix: str = "") -> str:
+def dense_path(waypoints, points: int) -> np.ndarray:
+    """The protocol sampled finely (for drawing the law as a line)."""
+    segs = [np.linspace(a, b, points + 1)[1:] for a, b in zip(waypoints, waypoints[1:])]
+    return np.concatenate(segs)
+
+
+def plot_protocols(results: dict, suffix: str = "", constants: dict | None = None) -> str:
     fig, axes = figure(max(1, len(results)), width=5.0)
     for ax, (name, entry) in zip(axes, results.items()):
         run = entry["run"]
         contact = run.contact()
         x = run.overlap / contact.delta_y
         ax.plot(x, run.force / contact.f_py, "o", ms=3, color="tab:blue", alpha=0.6, label="FE (CalculiX)")
+        dense = dense_path(run.case.waypoints, 60)
         for mode, style in (("hale", "-"), ("exact", "--")):
             e = entry[mode]
-            ax.plot(x, e["force"] / contact.f_py, style, label=f"law, {mode} ({e['source']}): "
-                    f"mean {100 * e['mean_rel']:.2f} %, max {100 * e['max_rel']:.1f} %")
+            law, _ = law_forces(run.case, dense, mode, constants=constants)
+            ax.plot(dense / contact.delta_y, law / contact.f_py, style, lw=1,
+                    label=f"law, {mode} ({e['source']}): mean {100 * e['mean_rel']:.2f} %, "
+                          f"max {100 * e['max_rel']:.1f} %")
         ax.set(title=f"{name}: {CASES[name]}", xlabel="δ / δ_Y", ylabel="F / F_pY")
         ax.legend(fontsize=7)
     return save(fig, f"paper_cases{suffix}.png")

@@ -86,7 +86,7 @@ def main() -> int:
                                     for m in ("hale", "exact")} for n, e in results.items()}
         if len(rows) >= 4:
             mine = protocol_results(constants=ours)
-            plot_protocols(mine, suffix="_our_constants")
+            plot_protocols(mine, suffix="_our_constants", constants=ours)
             text = _replace(text, "protocols_ours", protocol_table(mine))
     with open(DOC, "w") as fh:
         fh.write(text)
