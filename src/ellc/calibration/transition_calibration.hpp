@@ -1,0 +1,105 @@
+#pragma once
+// Calibration of the elastic–plastic transition (paper Sec. 4, eq. 51, 28, 52) from force data.
+//
+//  1. Per case, λ_FEM at each loading point beyond δ_Y from eq. (51):
+//       λ_FEM = (F − F_pY) / (π Y (c_c² − c_Y²)),   c_c² = R_e δ f1²/f2 (eq. 9).
+//     Eq. (28) is fitted to it for (λ_max, ε_max, n). Each residual is weighted by
+//     π Y (c_c² − c_Y²) / F, so that w (λ_model − λ_FEM) = (F_model − F) / F: the λ fit the paper
+//     did, with points counted by their relative force error (λ_FEM is ill-conditioned near δ_Y).
+//  2. One n shared by all cases (the paper's single n = 1.8): a joint fit of n with every case's
+//     λ_max, ε_max.
+//  3. Across cases, eq. (52): λ_max = m exp(o x) + p, ε_max = s exp(t x) + u, x = R_e/r̂^{I,J}.
+//     Three or more distinct x fit all three constants; two fit m, p (s, u) with o (t) kept from
+//     the prior; one fits p (u) only.
+// All least-squares problems are solved by Ceres (Levenberg–Marquardt, automatic derivatives).
+
+#include <span>
+#include <string>
+#include <vector>
+
+#include "ellc/calibration/calibration_case.hpp"
+#include "ellc/hertz/elliptic_hertz.hpp"
+#include "ellc/law/contact_constants.hpp"
+#include "ellc/law/transition_fit.hpp"
+
+namespace ellc {
+
+struct CalibrationOptions {
+  HertzMode hertz = HertzMode::hale;
+  // Supplies yield_pressure_factor and the constants kept when there are too few cases.
+  LawParameters prior;
+  // A case whose force stays within this relative distance of the Hertz curve at every point
+  // beyond δ_Y is elastic: it cannot tell anything about the transition.
+  double elastic_tolerance = 0.02;
+  std::size_t min_plastic_points = 4;  // loading points beyond δ_Y needed per case
+};
+
+// One point of the λ profile (Fig. 11).
+struct LambdaSample {
+  double overlap = 0.0;               // δ
+  double force = 0.0;                 // F (data)
+  double contact_radius_ratio = 0.0;  // c_c / c_Y
+  double lambda = 0.0;                // λ_FEM, eq. (51)
+  double weight = 0.0;                // π Y (c_c² − c_Y²) / F
+};
+
+struct TransitionPoint {
+  double lambda_max = 0.0;
+  double epsilon_max = 0.0;
+  double exponent = 0.0;  // n
+};
+
+struct CaseCalibration {
+  std::string name;
+  double radius_ratio = 0.0;      // R_e / r̂^{I,J}
+  double equivalent_radius = 0.0;  // R_e
+  double yield_overlap = 0.0;     // δ_Y
+  double yield_force = 0.0;       // F_pY
+  std::vector<LambdaSample> profile;
+  TransitionPoint own;     // step 1: λ_max, ε_max, n of this case alone
+  TransitionPoint shared;  // step 2: with the n shared by all cases
+  double own_rms = 0.0;     // RMS relative force error of step 1 over the profile points
+  double shared_rms = 0.0;  // same for step 2
+  double model_rms = 0.0;   // same for the final eq. (52) constants (the law as `ellc curve` runs it)
+  bool plateau_reached = false;  // the data reaches c_c ≥ ε_max c_Y (else λ_max, ε_max are extrapolated)
+};
+
+struct CalibrationResult {
+  std::vector<CaseCalibration> cases;
+  LawParameters law;  // the calibrated m, o, p, s, t, u, n and yield_pressure_factor
+  HertzMode hertz = HertzMode::hale;
+  bool rates_fitted = false;       // o, t fitted (≥ 3 distinct R_e/r̂)
+  bool amplitudes_fitted = false;  // m, s fitted (≥ 2 distinct R_e/r̂)
+  std::vector<std::string> warnings;
+};
+
+// Step 1 input: eq. (51) on the virgin-loading points (δ at or above every earlier δ) beyond δ_Y.
+[[nodiscard]] std::vector<LambdaSample> lambda_profile(const ContactConstants& constants,
+                                                       std::span<const double> overlaps,
+                                                       std::span<const double> forces);
+
+// Eq. (28) as a function of c_c/c_Y (λ_max beyond ε_max).
+[[nodiscard]] double profile_lambda(const TransitionPoint& point, double contact_radius_ratio,
+                                    double yield_pressure_factor) noexcept;
+
+// Eq. (52) fit of y = amplitude exp(rate x) + offset. `fixed_rate`/`fixed_amplitude` are used when
+// there are too few distinct x (see above). Returns {amplitude, rate, offset}.
+struct ExponentialFit {
+  double amplitude = 0.0;
+  double rate = 0.0;
+  double offset = 0.0;
+  bool rate_fitted = false;
+  bool amplitude_fitted = false;
+};
+[[nodiscard]] ExponentialFit fit_exponential(std::span<const double> x, std::span<const double> y,
+                                             double fixed_amplitude, double fixed_rate);
+
+// The whole calibration. Throws InputError (naming the case) for unusable data, e.g. data that
+// never leaves the elastic regime.
+[[nodiscard]] CalibrationResult calibrate(const std::vector<CalibrationCase>& cases,
+                                          const CalibrationOptions& options = {});
+
+// The `[model]` table for `ellc curve` / `ellc dem`, with the per-case results as comments.
+[[nodiscard]] std::string model_table_toml(const CalibrationResult& result);
+
+}  // namespace ellc
