@@ -1,4 +1,9 @@
-"""Plots for the ellc tools. Run as ``python3 -m ellc.plots curve IN.csv OUT.png``."""
+"""Plots for the ellc tools. Run as ``python3 -m ellc.plots curve IN.csv OUT.png``.
+
+Subcommands: ``curve`` (``ellc curve -o`` CSV), ``fit PREFIX`` (tables of ``ellc fit --plot PREFIX``:
+Fig. 11 and 12), ``pressure CASE.toml OUT.png`` (pressure along a_c, b_c and contact ellipses of a
+case file, Fig. 4/9/14; needs the compiled module). The drawing functions live in ellc.figures.
+"""
 
 import argparse
 import csv
@@ -53,6 +58,66 @@ def curve_command(args):
     return 0
 
 
+def fit_command(args):
+    """PREFIX_lambda.png (Fig. 11, one panel per case) and PREFIX_radius.png (Fig. 12)."""
+    import numpy as np
+
+    from ellc import figures
+
+    samples = read_columns(args.prefix + "_lambda.csv")
+    cases = read_columns(args.prefix + "_cases.csv")
+    radius = read_columns(args.prefix + "_radius.csv")
+    names = cases["case"] if isinstance(cases["case"], list) else []
+    names = [str(name) for name in names]
+    columns = min(3, max(1, len(names)))
+    rows = (len(names) + columns - 1) // columns
+    figure, grid = plt.subplots(rows, columns, figsize=(4.2 * columns, 3.4 * rows), dpi=110, squeeze=False)
+    case_of_sample = [str(name) for name in samples["case"]]
+    for index, name in enumerate(names):
+        axes = grid[index // columns][index % columns]
+        chosen = np.array([case == name for case in case_of_sample])
+        pick = lambda key: np.asarray(samples[key], dtype=float)[chosen]  # noqa: E731
+        figures.plot_lambda_profile(pick("overlap_over_yield"), pick("lambda_data"), pick("lambda_shared_fit"),
+                                    axes=axes, lambda_model=pick("lambda_model"))
+        plateau = "plateau reached" if float(cases["plateau_reached"][index]) > 0 else "plateau NOT reached"
+        axes.set_title(f"{name}: R_e/r^ = {float(cases['radius_ratio'][index]):.3g}, {plateau}", fontsize=8)
+        if index == 0:
+            axes.legend(fontsize=7)
+    for index in range(len(names), rows * columns):
+        grid[index // columns][index % columns].set_visible(False)
+    figure.tight_layout()
+    figure.savefig(args.prefix + "_lambda.png")
+    plt.close(figure)
+
+    figure, axes_pair = plt.subplots(1, 2, figsize=(10, 4.2), dpi=110)
+    figures.plot_radius_fits(cases["radius_ratio"], cases["lambda_max"], cases["epsilon_max"],
+                             radius["radius_ratio"], radius["lambda_max_fit"], radius["epsilon_max_fit"],
+                             axes_pair=axes_pair,
+                             prior_curves=(radius["lambda_max_prior"], radius["epsilon_max_prior"]))
+    figure.tight_layout()
+    figure.savefig(args.prefix + "_radius.png")
+    plt.close(figure)
+    return 0
+
+
+def pressure_command(args):
+    """Pressure along a_c and b_c and the contact ellipses of a case's load/unload path."""
+    import ellc
+    from ellc import figures
+
+    case = ellc.read_curve_case(args.case)
+    contact = ellc.Contact.from_case(case)
+    patches, labels = figures.contact_states(contact, case.overlap_path())
+    figure, axes = plt.subplots(1, 3, figsize=(14, 4.2), dpi=110)
+    figures.plot_pressure_profiles(patches, labels, contact.constants.yield_stress, axes_pair=axes[:2])
+    figures.plot_contact_ellipses(patches, labels, axes=axes[2])
+    figure.suptitle(args.title or args.case, fontsize=9)
+    figure.tight_layout()
+    figure.savefig(args.png)
+    plt.close(figure)
+    return 0
+
+
 def main(argv=None):
     parser = argparse.ArgumentParser(prog="python3 -m ellc.plots")
     sub = parser.add_subparsers(dest="command", required=True)
@@ -61,6 +126,14 @@ def main(argv=None):
     curve.add_argument("png")
     curve.add_argument("--title")
     curve.set_defaults(run=curve_command)
+    fit = sub.add_parser("fit", help="calibration plots from `ellc fit --plot PREFIX` tables (Fig. 11, 12)")
+    fit.add_argument("prefix")
+    fit.set_defaults(run=fit_command)
+    pressure = sub.add_parser("pressure", help="contact pressure along a_c, b_c and ellipses of a case file")
+    pressure.add_argument("case")
+    pressure.add_argument("png")
+    pressure.add_argument("--title")
+    pressure.set_defaults(run=pressure_command)
     args = parser.parse_args(argv)
     return args.run(args)
 
