@@ -43,9 +43,12 @@ void PairEllipsoidBK::allocate() {
   const int n = atom->ntypes;
   memory->create(setflag, n + 1, n + 1, "pair:setflag");
   memory->create(cutsq, n + 1, n + 1, "pair:cutsq");
+  // LAMMPS's own check would stop with "All pair coeffs are not set" before this style could say
+  // which types lack coefficients; setflag is therefore always 1, and given_ records pair_coeff.
   for (int i = 0; i <= n; ++i)
-    for (int j = 0; j <= n; ++j) setflag[i][j] = 0;
+    for (int j = 0; j <= n; ++j) setflag[i][j] = 1;
   const auto size = static_cast<std::size_t>(n + 1) * static_cast<std::size_t>(n + 1);
+  given_.assign(size, 0);
   type_coefficients_.assign(size, {});
   pair_coefficients_.assign(size, {});
   type_radius_.assign(static_cast<std::size_t>(n + 1), 0.0);
@@ -78,7 +81,7 @@ void PairEllipsoidBK::coeff(int narg, char** arg) {
   for (int i = ilo; i <= ihi; ++i) {
     for (int j = std::max(jlo, i); j <= jhi; ++j) {
       type_coefficients_[type_index(i, j)] = parsed.coefficients;
-      setflag[i][j] = 1;
+      given_[type_index(i, j)] = 1;
       ++count;
     }
   }
@@ -153,9 +156,9 @@ void PairEllipsoidBK::check_shapes() {
 
 double PairEllipsoidBK::init_one(int i, int j) {
   PairCoefficients resolved;
-  if (setflag[i][j]) {
+  if (given_[type_index(i, j)]) {
     resolved = explicit_pair(type_coefficients_[type_index(i, j)]);
-  } else if (setflag[i][i] && setflag[j][j]) {
+  } else if (given_[type_index(i, i)] && given_[type_index(j, j)]) {
     std::string problem;
     resolved = mixed_pair(type_coefficients_[type_index(i, i)], type_coefficients_[type_index(j, j)], problem);
     if (!problem.empty())
@@ -242,6 +245,11 @@ void PairEllipsoidBK::compute(int eflag, int vflag) {
   double** torque = atom->torque;
   const bool newton = force->newton_pair != 0;
   const double timestep = update->dt;
+  // The setup of a run recomputes the forces of the current step, whose contacts were already
+  // advanced by the last step of the previous run (or are fresh): the history must not move again.
+  const bool during_setup = update->setupflag != 0;
+  const int history_size = HistoryLayout::size();
+  std::vector<double> scratch;
 
   for (int index = 0; index < nall; ++index) {
     const double* body = &bodies_[static_cast<std::size_t>(index) * kBodyValues];
@@ -270,11 +278,15 @@ void PairEllipsoidBK::compute(int eflag, int vflag) {
     for (int jj = 0; jj < neighbors->numneigh[i]; ++jj) {
       const int j = jlist[jj] & NEIGHMASK;
       double* history = history_->slot_values(i, jj);
+      if (during_setup) {  // evaluate on a copy: the stored history is already that of this step
+        scratch.assign(history, history + history_size);
+        history = scratch.data();
+      }
       const double* body_j = &bodies_[static_cast<std::size_t>(j) * kBodyValues];
       const double reach = radius_i + std::max({body_j[0], body_j[1], body_j[2]});
       const double dx = x[i][0] - x[j][0], dy = x[i][1] - x[j][1], dz = x[i][2] - x[j][2];
       if (dx * dx + dy * dy + dz * dz >= reach * reach) {  // bounding spheres apart
-        if (history_->slot_active(i, jj)) {
+        if (!during_setup && history_->slot_active(i, jj)) {
           std::fill(history, history + HistoryLayout::size(), 0.0);
           history_->set_slot_active(i, jj, false);
         }
@@ -290,7 +302,7 @@ void PairEllipsoidBK::compute(int eflag, int vflag) {
       if (result.geometry_failed)
         fail_one(error, FLERR, style_prefix() + "the narrow phase failed for atoms " + std::to_string(tag[a]) + " and " +
                                std::to_string(tag[b]));
-      history_->set_slot_active(i, jj, result.touching);
+      if (!during_setup) history_->set_slot_active(i, jj, result.touching);
       if (!result.touching) continue;
 
       const Eigen::Vector3d force_on_i = i_is_a ? Eigen::Vector3d(-result.force_on_b) : result.force_on_b;
@@ -331,8 +343,9 @@ void PairEllipsoidBK::write_restart(FILE* file) {
   write_restart_settings(file);
   for (int i = 1; i <= atom->ntypes; ++i) {
     for (int j = i; j <= atom->ntypes; ++j) {
-      std::fwrite(&setflag[i][j], sizeof(int), 1, file);
-      if (!setflag[i][j]) continue;
+      const int given = given_[type_index(i, j)];
+      std::fwrite(&given, sizeof(int), 1, file);
+      if (!given) continue;
       const auto values = type_coefficients_[type_index(i, j)].serialize();
       std::fwrite(values.data(), sizeof(double), values.size(), file);
     }
@@ -344,9 +357,11 @@ void PairEllipsoidBK::read_restart(FILE* file) {
   allocate();
   for (int i = 1; i <= atom->ntypes; ++i) {
     for (int j = i; j <= atom->ntypes; ++j) {
-      if (comm->me == 0) utils::sfread(FLERR, &setflag[i][j], sizeof(int), 1, file, nullptr, error);
-      MPI_Bcast(&setflag[i][j], 1, MPI_INT, 0, world);
-      if (!setflag[i][j]) continue;
+      int given = 0;
+      if (comm->me == 0) utils::sfread(FLERR, &given, sizeof(int), 1, file, nullptr, error);
+      MPI_Bcast(&given, 1, MPI_INT, 0, world);
+      given_[type_index(i, j)] = static_cast<char>(given);
+      if (!given) continue;
       std::array<double, TypeCoefficients::kSerializedSize> values{};
       if (comm->me == 0) utils::sfread(FLERR, values.data(), sizeof(double), values.size(), file, nullptr, error);
       MPI_Bcast(values.data(), static_cast<int>(values.size()), MPI_DOUBLE, 0, world);

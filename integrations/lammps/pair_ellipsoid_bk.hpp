@@ -55,6 +55,7 @@ class PairEllipsoidBK : public LAMMPS_NS::Pair {
   [[nodiscard]] BodyState body_state(int index) const;
 
   ellc::HertzMode hertz_mode_ = ellc::HertzMode::hale;
+  std::vector<char> given_;                          // 1 where pair_coeff I J was given, (ntypes+1)²
   std::vector<TypeCoefficients> type_coefficients_;  // as given by pair_coeff, (ntypes+1)²
   std::vector<PairCoefficients> pair_coefficients_;  // resolved (explicit or mixed) by init_one
   std::vector<double> type_radius_;                   // largest semi-axis of any atom of the type

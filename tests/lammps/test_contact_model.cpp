@@ -1,0 +1,144 @@
+// The LAMMPS-free parts of pair_style ellipsoid/bk: pair_coeff parsing and mixing, and the
+// per-pair force model (normal law, damping, friction, history) on simple configurations.
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <vector>
+
+#include "contact_model.hpp"
+#include "ellc/law/contact_constants.hpp"
+#include "pair_coefficients.hpp"
+
+namespace ellc_lammps {
+namespace {
+
+TEST(PairCoefficients, ParsesPositionalValuesAndKeywords) {
+  const auto parsed = parse_coefficients({"142000", "0.25", "7900", "friction", "0.3", "damping", "0.1",
+                                          "lambda", "1", "-4", "2.5", "exponent", "2"});
+  ASSERT_EQ(parsed.error, "");
+  const auto& c = parsed.coefficients;
+  EXPECT_EQ(c.material.youngs_modulus, 142000.0);
+  EXPECT_EQ(c.material.poisson_ratio, 0.25);
+  EXPECT_EQ(c.material.yield_stress, 7900.0);
+  EXPECT_EQ(c.friction, 0.3);
+  EXPECT_EQ(c.normal_damping, 0.1);
+  EXPECT_EQ(c.law.fit.lambda_amplitude, 1.0);
+  EXPECT_EQ(c.law.fit.lambda_rate, -4.0);
+  EXPECT_EQ(c.law.fit.lambda_offset, 2.5);
+  EXPECT_EQ(c.law.fit.transition_exponent, 2.0);
+  EXPECT_EQ(c.law.fit.epsilon_amplitude, ellc::TransitionFit{}.epsilon_amplitude);  // default kept
+}
+
+TEST(PairCoefficients, RejectsBadInputWithTheFieldName) {
+  EXPECT_NE(parse_coefficients({"0", "0.25", "7900"}).error.find("youngs_modulus = 0"), std::string::npos);
+  EXPECT_NE(parse_coefficients({"-1", "0.25", "7900"}).error.find("youngs_modulus"), std::string::npos);
+  EXPECT_NE(parse_coefficients({"1", "0.5", "7900"}).error.find("poisson_ratio = 0.5"), std::string::npos);
+  EXPECT_NE(parse_coefficients({"1", "-1", "7900"}).error.find("poisson_ratio"), std::string::npos);
+  EXPECT_NE(parse_coefficients({"1", "0.2", "0"}).error.find("yield_stress"), std::string::npos);
+  EXPECT_NE(parse_coefficients({"1", "0.2"}).error.find("expected pair_coeff"), std::string::npos);
+  EXPECT_NE(parse_coefficients({"1", "0.2", "x"}).error.find("not a number"), std::string::npos);
+  EXPECT_NE(parse_coefficients({"1", "0.2", "3", "colour", "1"}).error.find("unknown keyword"), std::string::npos);
+  EXPECT_NE(parse_coefficients({"1", "0.2", "3", "lambda", "1", "2"}).error.find("needs 3"), std::string::npos);
+  EXPECT_NE(parse_coefficients({"1", "0.2", "3", "friction", "-0.1"}).error.find("friction"), std::string::npos);
+}
+
+TEST(PairCoefficients, MixesMaterialsByEquationThreeAndTheSofterYield) {
+  const auto steel = parse_coefficients({"210000", "0.3", "900", "friction", "0.4"}).coefficients;
+  const auto nmc = parse_coefficients({"142000", "0.25", "7900", "friction", "0.1"}).coefficients;
+  std::string error;
+  const PairCoefficients mixed = mixed_pair(steel, nmc, error);
+  EXPECT_EQ(error, "");
+  const double expected = 1.0 / ((1 - 0.09) / 210000.0 + (1 - 0.0625) / 142000.0);
+  EXPECT_NEAR(mixed.material.effective_modulus, expected, 1e-9 * expected);
+  EXPECT_EQ(mixed.material.yield_stress, 900.0);
+  EXPECT_NEAR(mixed.friction, 0.2, 1e-15);
+  const PairCoefficients same = explicit_pair(nmc);
+  EXPECT_NEAR(same.material.effective_modulus, 142000.0 / (2 * (1 - 0.0625)), 1e-9);
+}
+
+TEST(PairCoefficients, RefusesToMixDifferentLawParameters) {
+  const auto one = parse_coefficients({"1", "0.2", "3"}).coefficients;
+  const auto two = parse_coefficients({"1", "0.2", "3", "exponent", "2"}).coefficients;
+  std::string error;
+  (void)mixed_pair(one, two, error);
+  EXPECT_NE(error.find("own pair_coeff"), std::string::npos);
+}
+
+TEST(PairCoefficients, SerializationRoundTrips) {
+  const auto c = parse_coefficients({"142000", "0.25", "7900", "friction", "0.3", "tangential_stiffness", "0.8",
+                                     "epsilon", "8", "-6", "1.2", "yield_factor", "1.5"})
+                     .coefficients;
+  const auto back = TypeCoefficients::deserialize(c.serialize());
+  EXPECT_EQ(back.serialize(), c.serialize());
+}
+
+// Two equal NMC spheres of radius 5 along x: R_e = 2.5, Hertz until δ_Y.
+struct SpherePair : ::testing::Test {
+  BodyState a, b;
+  PairCoefficients coefficients;
+  std::vector<double> history = std::vector<double>(static_cast<std::size_t>(HistoryLayout::size()), 0.0);
+  SpherePair() {
+    a.semi_axes = b.semi_axes = Eigen::Vector3d::Constant(5.0);
+    a.mass = b.mass = 2.0;
+    coefficients = explicit_pair(parse_coefficients({"142000", "0.25", "7900"}).coefficients);
+  }
+  PairResult at_overlap(double overlap) {
+    b.position = {10.0 - overlap, 0.0, 0.0};
+    return evaluate_pair(a, b, coefficients, ellc::HertzMode::hale, 1e-3, history.data());
+  }
+};
+
+TEST_F(SpherePair, NormalForceIsTheLawAndPointsFromAToB) {
+  const auto result = at_overlap(0.01);
+  ASSERT_TRUE(result.touching);
+  const auto constants = ellc::make_contact_constants(coefficients.material, {0.2, 0.2}, {0.2, 0.2}, 0.0, 10.0,
+                                                      ellc::HertzMode::hale, coefficients.law);
+  const double expected = ellc::evaluate_contact(constants, result.overlap, 0.0).force;
+  EXPECT_NEAR(result.force_on_b.x(), expected, 1e-12 * expected);
+  EXPECT_NEAR(result.force_on_b.y(), 0.0, 1e-12 * expected);
+  EXPECT_NEAR(result.torque_on_a.norm() + result.torque_on_b.norm(), 0.0, 1e-9 * expected);
+  EXPECT_DOUBLE_EQ(history[HistoryLayout::max_overlap], result.overlap);
+}
+
+TEST_F(SpherePair, KeepsTheLargestOverlapAndForgetsItOnSeparation) {
+  (void)at_overlap(1.0);
+  const double deepest = history[HistoryLayout::max_overlap];
+  const auto unloading = at_overlap(0.9);
+  EXPECT_EQ(history[HistoryLayout::max_overlap], deepest);
+  EXPECT_EQ(unloading.law.regime, ellc::Regime::unloading);
+  const auto apart = at_overlap(-0.1);
+  EXPECT_FALSE(apart.touching);
+  for (double value : history) EXPECT_EQ(value, 0.0);
+}
+
+TEST_F(SpherePair, FrictionIsCappedByCoulombAndDampingOpposesApproach) {
+  coefficients.friction = 0.2;
+  coefficients.normal_damping = 0.3;
+  b.velocity = {-1.0, 50.0, 0.0};  // approaching and sliding fast along y
+  const auto result = at_overlap(0.05);
+  ASSERT_TRUE(result.touching);
+  EXPECT_GT(result.normal_force, result.law.force);  // damping adds while approaching
+  const double tangential = std::hypot(result.force_on_b.y(), result.force_on_b.z());
+  EXPECT_NEAR(tangential, 0.2 * result.normal_force, 1e-12 * result.normal_force);
+  EXPECT_LT(result.force_on_b.y(), 0.0);  // opposes b's sliding
+  // The friction force at the contact point (midway) turns both spheres the same way.
+  EXPECT_GT(result.torque_on_b.norm(), 0.0);
+  EXPECT_TRUE(result.torque_on_a.isApprox(result.torque_on_b, 1e-12));
+}
+
+TEST(AngularVelocity, IsMomentumOverInertiaForASphereAndRotatesWithTheBody) {
+  const Eigen::Vector3d momentum{1.0, -2.0, 0.5};
+  const Eigen::Vector3d sphere =
+      angular_velocity(momentum, Eigen::Quaterniond(Eigen::AngleAxisd(0.7, Eigen::Vector3d::UnitZ())),
+                       Eigen::Vector3d::Constant(2.0), 5.0);
+  EXPECT_TRUE(sphere.isApprox(momentum / (0.4 * 5.0 * 4.0), 1e-14));
+  // A rod spinning about its long body axis x, turned so that x points along space y.
+  const Eigen::Quaterniond turned(Eigen::AngleAxisd(M_PI / 2, Eigen::Vector3d::UnitZ()));
+  const Eigen::Vector3d spin = angular_velocity({0.0, 1.0, 0.0}, turned, {3.0, 1.0, 1.0}, 1.0);
+  EXPECT_NEAR(spin.y(), 1.0 / (0.2 * 2.0), 1e-12);
+  EXPECT_NEAR(spin.x(), 0.0, 1e-12);
+}
+
+}  // namespace
+}  // namespace ellc_lammps
