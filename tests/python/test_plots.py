@@ -1,0 +1,56 @@
+"""The figures render (Agg) from Python objects and from the CLI's CSV tables."""
+
+import numpy as np
+import pytest
+
+matplotlib = pytest.importorskip("matplotlib")
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+
+import ellc  # noqa: E402
+from ellc import figures, plots  # noqa: E402
+from conftest import SOURCE_DIR, run_cli, synthetic_cases  # noqa: E402
+
+
+def test_figures_from_python_objects(tmp_path):
+    case = ellc.read_curve_case(str(SOURCE_DIR / "examples" / "paper_case2.toml"))
+    contact = ellc.Contact.from_case(case)
+    path = case.overlap_path()
+    constants = contact.constants
+    figure, axes = plt.subplots(2, 3, figsize=(14, 8))
+    figures.plot_normalized_force(path, contact.force(path), constants.yield_overlap, constants.yield_force,
+                                  axes=axes[0][0])
+    loading = np.linspace(constants.yield_overlap * 1.01, path.max(), 50)
+    figures.plot_lambda_profile(loading / constants.yield_overlap, contact.lambda_profile(loading), axes=axes[0][1])
+    patches, labels = figures.contact_states(contact, path)
+    assert len(patches) == 4 and patches[-1].pressure_cap == np.inf  # the unloading state is Hertz
+    assert patches[1].pressure_cap < patches[1].field_peak_pressure  # truncated in the transition
+    figures.plot_pressure_profiles(patches, labels, constants.yield_stress, axes_pair=axes[1][:2])
+    figures.plot_contact_ellipses(patches, labels, axes=axes[1][2])
+    result = ellc.calibrate(synthetic_cases(noise=0.0, names=["sphere", "flat", "slim"]))
+    x = np.linspace(0, 0.7, 20)
+    figures.plot_radius_fits([c.radius_ratio for c in result.cases], [c.shared.lambda_max for c in result.cases],
+                             [c.shared.epsilon_max for c in result.cases], x, result.fit.lambda_max(x),
+                             result.fit.epsilon_max(x), axes_pair=[axes[0][2], axes[0][2].twinx()])
+    figure.savefig(tmp_path / "all.png")
+    assert (tmp_path / "all.png").stat().st_size > 10000
+
+
+def test_pressure_cap_truncates_hertz():
+    class Patch:
+        semi_axis_major, semi_axis_minor, field_peak_pressure, pressure_cap = 2.0, 1.0, 10.0, 6.0
+
+    x, p_x, y, p_y = figures.pressure_along_axes(Patch())
+    assert p_x.max() == 6.0 and p_x[0] == 0.0 and x[-1] == 2.0 and y[-1] == 1.0
+
+
+def test_plots_command_line(cli, tmp_path):
+    run_cli(cli, "curve", SOURCE_DIR / "examples" / "paper_case2.toml", "-o", tmp_path / "c.csv",
+            "--plot", tmp_path / "c.png")
+    assert (tmp_path / "c.png").stat().st_size > 0
+    assert plots.main(["pressure", str(SOURCE_DIR / "examples" / "paper_case1.toml"), str(tmp_path / "p.png")]) == 0
+    assert (tmp_path / "p.png").stat().st_size > 0
+    result = ellc.calibrate(synthetic_cases(noise=0.01, names=["sphere", "flat", "slim"]))
+    result.write_tables(str(tmp_path / "fit"))
+    assert plots.main(["fit", str(tmp_path / "fit")]) == 0
+    assert (tmp_path / "fit_lambda.png").stat().st_size > 0 and (tmp_path / "fit_radius.png").stat().st_size > 0
