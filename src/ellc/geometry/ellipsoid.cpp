@@ -2,7 +2,6 @@
 
 #include <numbers>
 
-#include "ellc/geometry/tangent_frame.hpp"
 
 namespace ellc {
 
@@ -20,6 +19,8 @@ Ellipsoid::Ellipsoid(const Eigen::Vector3d& semi_axes, const Pose& pose) noexcep
   shape_diagonal_ = semi_axes_.array().square().inverse();
   inverse_shape_ = rotation_ * semi_axes_.array().square().matrix().asDiagonal() * rotation_.transpose();
   inverse_shape_ = 0.5 * (inverse_shape_ + inverse_shape_.transpose()).eval();  // exactly symmetric
+  shape_ = rotation_ * shape_diagonal_.asDiagonal() * rotation_.transpose();
+  shape_ = 0.5 * (shape_ + shape_.transpose()).eval();
 }
 
 Eigen::Vector3d Ellipsoid::support_point(const Eigen::Vector3d& direction) const noexcept {
@@ -35,29 +36,26 @@ double Ellipsoid::support_radius(const Eigen::Vector3d& unit_direction) const no
   return std::sqrt(unit_direction.dot(inverse_shape_ * unit_direction));
 }
 
-SurfaceCurvature Ellipsoid::body_curvature(const Eigen::Vector3d& body_normal, double gradient_norm) const noexcept {
-  // In the tangent frame (t1, t2) of n the shape operator is tᵢᵀ M tⱼ / |M x| (the factors 2 of
-  // ∇F = 2 M x and ∇²F = 2 M cancel).
-  const auto [t1, t2] = geometry_detail::tangent_frame(body_normal);
-  const Eigen::Vector3d m_t1 = shape_diagonal_.cwiseProduct(t1);
-  const Eigen::Vector3d m_t2 = shape_diagonal_.cwiseProduct(t2);
-  const double inverse_norm = 1.0 / gradient_norm;
-  const auto eigen = geometry_detail::symmetric_eigen2(t1.dot(m_t1) * inverse_norm, t2.dot(m_t1) * inverse_norm,
-                                                       t2.dot(m_t2) * inverse_norm, SurfaceCurvature::umbilic_tolerance);
-  const Eigen::Vector3d direction_1 = eigen.x * t1 + eigen.y * t2;
+SurfaceCurvature Ellipsoid::curvature_in_frame(const Eigen::Vector3d& outward_normal,
+                                               const geometry_detail::TangentFrame& frame,
+                                               double inverse_gradient_norm) const noexcept {
+  // Wₐᵦ = tₐᵀ M_w tᵦ / |M_w (x − c)| (the factors 2 of ∇F = 2 M_w (x − c) and ∇²F = 2 M_w cancel).
+  const Eigen::Vector3d m_t1 = shape_ * frame.t1;
+  const Eigen::Vector3d m_t2 = shape_ * frame.t2;
+  const auto eigen = geometry_detail::symmetric_eigen2(
+      frame.t1.dot(m_t1) * inverse_gradient_norm, frame.t2.dot(m_t1) * inverse_gradient_norm,
+      frame.t2.dot(m_t2) * inverse_gradient_norm, SurfaceCurvature::umbilic_tolerance);
   SurfaceCurvature curvature;
   curvature.kappa_1 = eigen.high;
   curvature.kappa_2 = eigen.low;
-  curvature.direction_1 = rotation_ * direction_1;
-  curvature.direction_2 = rotation_ * body_normal.cross(direction_1);
+  curvature.direction_1 = eigen.x * frame.t1 + eigen.y * frame.t2;
+  curvature.direction_2 = outward_normal.cross(curvature.direction_1);
   return curvature;
 }
 
 SurfaceCurvature Ellipsoid::curvature_with_normal(const Eigen::Vector3d& world_normal) const noexcept {
-  const Eigen::Vector3d body_normal = (rotation_.transpose() * world_normal).normalized();
-  // At the point x = D² n / |D n| the gradient M x is n / |D n|.
-  const double stretched = semi_axes_.cwiseProduct(body_normal).norm();
-  return body_curvature(body_normal, 1.0 / stretched);
+  const Eigen::Vector3d normal = world_normal.normalized();
+  return curvature_in_frame(normal, geometry_detail::tangent_frame(normal), support_radius(normal));
 }
 
 SurfaceCurvature Ellipsoid::curvature_at(const Eigen::Vector3d& world_surface_point) const noexcept {
@@ -65,9 +63,10 @@ SurfaceCurvature Ellipsoid::curvature_at(const Eigen::Vector3d& world_surface_po
   const double level = body_point.dot(shape_diagonal_.cwiseProduct(body_point));
   if (level > 0.0) body_point /= std::sqrt(level);  // radial projection onto the surface
   else body_point = semi_axes_.x() * Eigen::Vector3d::UnitX();  // the centre itself: any point will do
-  const Eigen::Vector3d gradient = shape_diagonal_.cwiseProduct(body_point);
+  const Eigen::Vector3d gradient = rotation_ * shape_diagonal_.cwiseProduct(body_point);
   const double gradient_norm = gradient.norm();
-  return body_curvature(gradient / gradient_norm, gradient_norm);
+  const Eigen::Vector3d normal = gradient / gradient_norm;
+  return curvature_in_frame(normal, geometry_detail::tangent_frame(normal), 1.0 / gradient_norm);
 }
 
 Eigen::Vector3d Ellipsoid::normal_at(const Eigen::Vector3d& world_point) const noexcept {

@@ -15,6 +15,7 @@
 
 #include <cmath>
 
+#include "ellc/geometry/tangent_frame.hpp"
 #include "ellc/hertz/elliptic_hertz.hpp"
 
 namespace ellc {
@@ -66,6 +67,8 @@ class Ellipsoid {
   [[nodiscard]] const Eigen::Matrix3d& rotation() const noexcept { return rotation_; }
   // S = R D² Rᵀ: the support point in direction n is c + S n / sqrt(nᵀ S n).
   [[nodiscard]] const Eigen::Matrix3d& inverse_shape() const noexcept { return inverse_shape_; }
+  // M_w = R D⁻² Rᵀ: the surface is (x − c)ᵀ M_w (x − c) = 1 (world frame).
+  [[nodiscard]] const Eigen::Matrix3d& shape() const noexcept { return shape_; }
   [[nodiscard]] bool valid() const noexcept { return valid_; }
 
   // The surface point whose outward unit normal is `world_normal` (normalised here).
@@ -76,13 +79,19 @@ class Ellipsoid {
   [[nodiscard]] double support_radius(const Eigen::Vector3d& unit_direction) const noexcept;
 
   // Principal curvatures and directions at a surface point. The point is first pulled radially
-  // onto the surface, so points a rounding error off the surface are fine. Shape operator
-  // W = P (∇²F) P / |∇F| of F = x_bᵀ M x_b − 1 restricted to the tangent plane (P = I − n nᵀ).
+  // onto the surface, so points a rounding error off the surface are fine. Shape operator of the
+  // implicit surface F(x) = (x − c)ᵀ M_w (x − c) − 1: W = P (∇²F) P / |∇F| on the tangent plane
+  // (P = I − n nᵀ, n = ∇F/|∇F|), i.e. Wₐᵦ = tₐᵀ M_w tᵦ / |M_w (x − c)| in a tangent frame.
   // At an umbilic (κ1 = κ2 to SurfaceCurvature::umbilic_tolerance) the directions are the
   // tangent frame of the normal (deterministic, never NaN).
   [[nodiscard]] SurfaceCurvature curvature_at(const Eigen::Vector3d& world_surface_point) const noexcept;
-  // The same at the surface point with outward unit normal `world_normal` (cheaper: no projection).
+  // The same at the surface point with outward unit normal `world_normal` (there |M_w (x − c)| = 1/ρ(n)).
   [[nodiscard]] SurfaceCurvature curvature_with_normal(const Eigen::Vector3d& world_normal) const noexcept;
+  // The same for callers that already hold a tangent frame of the outward normal and
+  // 1/|M_w (x − c)| at the point (= the support radius ρ(n) at the point with normal n).
+  [[nodiscard]] SurfaceCurvature curvature_in_frame(const Eigen::Vector3d& outward_normal,
+                                                    const geometry_detail::TangentFrame& frame,
+                                                    double inverse_gradient_norm) const noexcept;
   // Outward unit normal at (the radial projection onto the surface of) a point.
   [[nodiscard]] Eigen::Vector3d normal_at(const Eigen::Vector3d& world_point) const noexcept;
   // x_bᵀ M x_b − 1: < 0 inside, 0 on the surface, > 0 outside.
@@ -98,12 +107,12 @@ class Ellipsoid {
   [[nodiscard]] Eigen::Vector3d to_body(const Eigen::Vector3d& world_point) const noexcept {
     return rotation_.transpose() * (world_point - pose_.position);
   }
-  [[nodiscard]] SurfaceCurvature body_curvature(const Eigen::Vector3d& body_normal, double gradient_norm) const noexcept;
 
   Eigen::Vector3d semi_axes_;
   Pose pose_;
   Eigen::Matrix3d rotation_;
   Eigen::Matrix3d inverse_shape_;
+  Eigen::Matrix3d shape_;
   Eigen::Vector3d shape_diagonal_;  // M = diag(a⁻², b⁻², c⁻²), body frame
   bool valid_ = false;
 };

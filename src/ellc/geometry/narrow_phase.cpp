@@ -12,7 +12,7 @@ namespace {
 
 constexpr int kMaxNewtonSteps = 40;
 constexpr double kGradientTolerance = 1e-14;  // |tangential gradient| / (ρ_I + ρ_J)
-constexpr double kFinalStep = 1e-13;          // a Newton step this small is taken and ends the solve
+constexpr double kFinalStep = 1e-9;           // a Newton step this small is taken and ends the solve (error ~ step²)
 constexpr double kMaxStep = 0.5;              // radians per Newton step
 constexpr double kFullStep = 1e-7;            // below this the Newton step is taken without a line search
 
@@ -82,7 +82,7 @@ Solve common_normal(const PairData& pair, const Eigen::Vector3d& start) noexcept
     const auto frame = geometry_detail::tangent_frame(at.normal);
     const double g1 = frame.t1.dot(at.gradient);
     const double g2 = frame.t2.dot(at.gradient);
-    const double gradient_norm = std::hypot(g1, g2);
+    const double gradient_norm = std::sqrt(g1 * g1 + g2 * g2);
     if (!std::isfinite(gradient_norm)) return solve;
     if (gradient_norm <= gradient_tolerance) {
       solve.converged = true;
@@ -99,14 +99,15 @@ Solve common_normal(const PairData& pair, const Eigen::Vector3d& start) noexcept
     const double h22 = hi.h22 + hj.h22 - at.overlap;
     // Levenberg shift where the Hessian is not safely positive definite.
     const double size = std::abs(h11) + std::abs(h22) + std::abs(h12);
-    const double lowest = 0.5 * (h11 + h22) - std::hypot(0.5 * (h11 - h22), h12);
+    const double half_split = 0.5 * (h11 - h22);
+    const double lowest = 0.5 * (h11 + h22) - std::sqrt(half_split * half_split + h12 * h12);
     const double shift = lowest > 1e-8 * size ? 0.0 : 1e-3 * size - lowest + 1e-300;
     const double d11 = h11 + shift;
     const double d22 = h22 + shift;
     const double determinant = d11 * d22 - h12 * h12;
     double s1 = -(d22 * g1 - h12 * g2) / determinant;
     double s2 = -(d11 * g2 - h12 * g1) / determinant;
-    double length = std::hypot(s1, s2);
+    double length = std::sqrt(s1 * s1 + s2 * s2);
     if (!std::isfinite(length)) return solve;
     if (length > kMaxStep) {
       s1 *= kMaxStep / length;
@@ -165,8 +166,10 @@ NarrowPhaseResult finish(const Ellipsoid& body_i, const Ellipsoid& body_j, const
   result.status = NarrowPhaseStatus::contact;
   ContactGeometry& geometry = result.geometry;
   fill_support_geometry(body_i, body_j, at, geometry);
-  geometry.curvature_i = body_i.curvature_with_normal(at.normal);
-  geometry.curvature_j = body_j.curvature_with_normal(-at.normal);
+  // Both sides in one tangent frame; at the point with normal ±n, 1/|∇F| is the support radius.
+  const auto frame = geometry_detail::tangent_frame(at.normal);
+  geometry.curvature_i = body_i.curvature_in_frame(at.normal, frame, at.reach_i);
+  geometry.curvature_j = body_j.curvature_in_frame(-at.normal, frame, at.reach_j);
   geometry.alpha = pair_principal_directions(geometry.curvature_i, geometry.curvature_j, at.normal);
   result.warm_start = {{at.normal.x(), at.normal.y(), at.normal.z()}, true};
   return result;

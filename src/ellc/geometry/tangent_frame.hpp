@@ -39,7 +39,7 @@ struct SymmetricEigen2 {
                                                       double umbilic_tolerance) noexcept {
   const double mean = 0.5 * (s11 + s22);
   const double half_difference = 0.5 * (s11 - s22);
-  const double radius = std::hypot(half_difference, s12);
+  const double radius = std::sqrt(half_difference * half_difference + s12 * s12);
   SymmetricEigen2 result{mean + radius, mean - radius, 1.0, 0.0};
   if (2.0 * radius <= umbilic_tolerance * (std::abs(s11) + std::abs(s22))) return result;
   // Two expressions for the same eigenvector; take the one without cancellation.
@@ -49,7 +49,7 @@ struct SymmetricEigen2 {
     x = s12;
     y = radius - half_difference;
   }
-  const double length = std::hypot(x, y);
+  const double length = std::sqrt(x * x + y * y);
   result.x = x / length;
   result.y = y / length;
   return result;
