@@ -3,13 +3,9 @@
 #include <algorithm>
 #include <cmath>
 
-#include "contact_geometry.hpp"
-#include "ellc/geometry/tip_contact.hpp"
-#include "ellc/law/contact_constants.hpp"
+#include "ellc/geometry/normal_contact.hpp"
 
 namespace ellc_lammps {
-
-int HistoryLayout::size() { return warm_start + warm_start_size(); }
 
 Eigen::Vector3d angular_velocity(const Eigen::Vector3d& angular_momentum, const Eigen::Quaterniond& orientation,
                                  const Eigen::Vector3d& semi_axes, double mass) {
@@ -26,38 +22,55 @@ void forget(double* history) { std::fill(history, history + HistoryLayout::size(
 Eigen::Vector3d point_velocity(const BodyState& body, const Eigen::Vector3d& point) {
   return body.velocity + body.angular_velocity.cross(point - body.position);
 }
+
+ellc::NarrowPhaseWarmStart read_warm_start(const double* history) {
+  ellc::NarrowPhaseWarmStart warm;
+  std::copy(history + HistoryLayout::warm_normal, history + HistoryLayout::warm_normal + 3, warm.normal.begin());
+  warm.valid = history[HistoryLayout::warm_valid] != 0.0;
+  return warm;
+}
+
+void write_warm_start(const ellc::NarrowPhaseWarmStart& warm, double* history) {
+  std::copy(warm.normal.begin(), warm.normal.end(), history + HistoryLayout::warm_normal);
+  history[HistoryLayout::warm_valid] = warm.valid ? 1.0 : 0.0;
+}
 }  // namespace
 
 PairResult evaluate_pair(const BodyState& a, const BodyState& b, const PairCoefficients& coefficients,
                          ellc::HertzMode mode, double timestep, double* history) {
   PairResult result;
-  const PairGeometry geometry = pair_geometry(a, b, history + HistoryLayout::warm_start);
-  if (!geometry.valid || !(geometry.overlap > 0.0)) {
-    forget(history);
-    result.geometry_failed = !geometry.valid;
+  const ellc::Ellipsoid body_a(a.semi_axes, {a.position, a.orientation});
+  const ellc::Ellipsoid body_b(b.semi_axes, {b.position, b.orientation});
+  const ellc::NarrowPhaseWarmStart warm = read_warm_start(history);
+  const ellc::NarrowPhaseResult narrow = ellc::ellipsoid_contact(body_a, body_b, &warm);
+  result.iterations = narrow.iterations;
+  if (narrow.status != ellc::NarrowPhaseStatus::contact) {
+    forget(history);  // history starts at δ > 0 and ends at δ ≤ 0 (model-notes §5)
+    result.geometry_failed = narrow.status == ellc::NarrowPhaseStatus::failed;
     return result;
   }
+  const ellc::ContactGeometry& geometry = narrow.geometry;
+  write_warm_start(narrow.warm_start, history);
   result.touching = true;
   result.overlap = geometry.overlap;
   result.normal = geometry.normal;
   result.point = geometry.point;
   const Eigen::Vector3d& n = geometry.normal;
 
-  // Normal: the Becker–Kamlah law with δ_* from the history.
-  const double mean_radius_sum = ellc::mean_radius(a.semi_axes) + ellc::mean_radius(b.semi_axes);
-  const ellc::ContactConstants constants =
-      ellc::make_contact_constants(coefficients.material, geometry.curvature_a, geometry.curvature_b, geometry.alpha,
-                                   mean_radius_sum, mode, coefficients.law);
-  result.law = ellc::evaluate_contact(constants, geometry.overlap, history[HistoryLayout::max_overlap]);
-  history[HistoryLayout::max_overlap] = result.law.max_overlap;
+  // Normal: the Becker–Kamlah law with δ_* from the history, through the geometry layer.
+  const ellc::NormalContact normal =
+      ellc::normal_contact(geometry, coefficients.material, body_a.mean_radius() + body_b.mean_radius(), mode,
+                           coefficients.law, history[HistoryLayout::max_overlap]);
+  result.law = normal.law;
+  history[HistoryLayout::max_overlap] = normal.law.max_overlap;
 
   // Damping and friction scale with the Hertz tangent stiffness k_n = dF_H/dδ.
   const double effective_mass = a.mass * b.mass / (a.mass + b.mass);
-  const double normal_stiffness = 1.5 * constants.hertz_coefficient * std::sqrt(geometry.overlap);
+  const double normal_stiffness = 1.5 * normal.constants.hertz_coefficient * std::sqrt(geometry.overlap);
   const Eigen::Vector3d relative_velocity = point_velocity(b, geometry.point) - point_velocity(a, geometry.point);
   const double normal_speed = relative_velocity.dot(n);  // > 0 when separating
   const double normal_damping = 2.0 * coefficients.normal_damping * std::sqrt(effective_mass * normal_stiffness);
-  result.normal_force = std::max(result.law.force - normal_damping * normal_speed, 0.0);
+  result.normal_force = std::max(normal.law.force - normal_damping * normal_speed, 0.0);
 
   // Tangential: spring ξ (displacement of b relative to a), kept in the current tangent plane.
   Eigen::Vector3d force_on_b = result.normal_force * n;

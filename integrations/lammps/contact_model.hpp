@@ -10,6 +10,7 @@
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
+#include "ellc/geometry/narrow_phase.hpp"
 #include "ellc/hertz/elliptic_hertz.hpp"
 #include "ellc/law/contact_law.hpp"
 #include "ellc/law/transition_fit.hpp"
@@ -37,17 +38,19 @@ struct BodyState {
 };
 
 // Layout of one contact's history (doubles): δ_*, the tangential spring (3), then the
-// narrow-phase warm start.
+// narrow-phase warm start (the last common normal and whether it is set).
 struct HistoryLayout {
   static constexpr int max_overlap = 0;
   static constexpr int spring = 1;
-  static constexpr int warm_start = 4;
-  [[nodiscard]] static int size();
+  static constexpr int warm_normal = 4;
+  static constexpr int warm_valid = 7;
+  [[nodiscard]] static constexpr int size() { return 8; }
 };
 
 struct PairResult {
   bool touching = false;
-  bool geometry_failed = false;  // the narrow phase could not resolve the pair
+  bool geometry_failed = false;  // the narrow phase could not resolve the pair (invalid bodies)
+  int iterations = 0;            // narrow-phase Newton steps
   double overlap = 0.0;
   double normal_force = 0.0;  // elastoplastic law + damping, ≥ 0
   ellc::LawResult law;

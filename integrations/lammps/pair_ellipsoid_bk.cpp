@@ -299,9 +299,10 @@ void PairEllipsoidBK::compute(int eflag, int vflag) {
       const PairResult result =
           evaluate_pair(body_state(a), body_state(b), pair_coefficients_[type_index(type[i], type[j])], hertz_mode_,
                         timestep, history);
-      if (result.geometry_failed)
-        fail_one(error, FLERR, style_prefix() + "the narrow phase failed for atoms " + std::to_string(tag[a]) + " and " +
-                               std::to_string(tag[b]));
+      if (result.geometry_failed && narrow_phase_failures_++ == 0)
+        error->warning(FLERR, style_prefix() + "the narrow phase did not converge for atoms " + std::to_string(tag[a]) +
+                                  " and " + std::to_string(tag[b]) + " at step " + std::to_string(update->ntimestep) +
+                                  "; the pair is treated as not touching (reported once per rank)");
       if (!during_setup) history_->set_slot_active(i, jj, result.touching);
       if (!result.touching) continue;
 

@@ -64,6 +64,7 @@ class PairEllipsoidBK : public LAMMPS_NS::Pair {
   std::vector<double> bodies_;            // per atom, owned + ghost: kBodyValues
   std::vector<double> angular_velocity_;  // per atom, owned + ghost: 3
   bool warned_aspect_ = false;
+  long narrow_phase_failures_ = 0;
 };
 
 }  // namespace ellc_lammps
