@@ -60,6 +60,13 @@ int neighbour_cells(int cell, int n, bool periodic, int out[3]) {
   return count;
 }
 
+// The periodic image of a separation closest to zero (|d| ≤ L/2 for |d| < 3L/2).
+double minimum_image(double d, double length) noexcept {
+  if (d > 0.5 * length) return d - length;
+  if (d < -0.5 * length) return d + length;
+  return d;
+}
+
 }  // namespace
 
 void wrap_positions(ParticleSet& particles, const Box& box) noexcept {
@@ -95,7 +102,12 @@ std::vector<PairSlot> find_candidate_pairs(const ParticleSet& particles, const B
 #ifdef _OPENMP
   threads = omp_get_max_threads();
 #endif
-  std::vector<std::vector<PairSlot>> found(static_cast<std::size_t>(threads));
+  struct Candidate {  // small: sorted before the (large) pair slots are made
+    PairKey key;
+    std::uint32_t i, j;
+    Eigen::Vector3d shift;
+  };
+  std::vector<std::vector<Candidate>> found(static_cast<std::size_t>(threads));
   const auto& x = particles.position;
   const auto& radius = particles.bounding_radius;
 
@@ -123,12 +135,10 @@ std::vector<PairSlot> find_candidate_pairs(const ParticleSet& particles, const B
               const std::uint32_t q = sorted[b];
               if (q <= p) continue;  // each unordered pair once
               const Eigen::Vector3d raw = x[q] - x[p];
-              Eigen::Vector3d d = raw;
-              d.x() -= box.lx * std::round(d.x() / box.lx);
-              d.y() -= box.ly * std::round(d.y() / box.ly);
+              const Eigen::Vector3d d(minimum_image(raw.x(), box.lx), minimum_image(raw.y(), box.ly), raw.z());
               const double reach = radius[p] + radius[q] + skin;
               if (d.squaredNorm() >= reach * reach) continue;
-              PairSlot pair;
+              Candidate pair;
               const Eigen::Vector3d shift = d - raw;  // image offset for q seen from p
               if (particles.id[p] < particles.id[q]) {
                 pair.i = p;
@@ -145,12 +155,16 @@ std::vector<PairSlot> find_candidate_pairs(const ParticleSet& particles, const B
           }
     }
   }
-  std::size_t total = 0;
-  for (const auto& part : found) total += part.size();
-  std::vector<PairSlot> pairs;
-  pairs.reserve(total);
-  for (auto& part : found) pairs.insert(pairs.end(), part.begin(), part.end());
-  std::sort(pairs.begin(), pairs.end(), [](const PairSlot& l, const PairSlot& r) { return l.key < r.key; });
+  std::vector<Candidate> all;
+  for (auto& part : found) all.insert(all.end(), part.begin(), part.end());
+  std::sort(all.begin(), all.end(), [](const Candidate& l, const Candidate& r) { return l.key < r.key; });
+  std::vector<PairSlot> pairs(all.size());
+  for (std::size_t index = 0; index < all.size(); ++index) {
+    pairs[index].key = all[index].key;
+    pairs[index].i = all[index].i;
+    pairs[index].j = all[index].j;
+    pairs[index].shift = all[index].shift;
+  }
   return pairs;
 }
 

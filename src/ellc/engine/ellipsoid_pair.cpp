@@ -1,23 +1,90 @@
-#include "ellc/engine/pair_geometry.hpp"
-
-namespace ellc::engine {
-
-// Placeholder until the general narrow phase of src/ellc/geometry lands.
-PairSolution solve_ellipsoid_pair(const BodyRef&, const BodyRef&, ContactHistory&, const NormalContext&) noexcept {
-  PairSolution solution;
-  solution.status = PairStatus::failed;
-  return solution;
-}
-
-PairSolution solve_ellipsoid_wall(const BodyRef&, const Wall&, ContactHistory&, const NormalContext&) noexcept {
-  PairSolution solution;
-  solution.status = PairStatus::failed;
-  return solution;
-}
-
-}  // namespace ellc::engine
+// The ellipsoid paths of the adapter: the geometry layer's narrow phase (common normal,
+// warm-started from the pair's previous normal) and wall contact, then normal_contact() for the
+// constants and the law. Nothing here re-derives a formula of the law.
 
 #include "ellc/engine/packing.hpp"
+#include "ellc/engine/pair_geometry.hpp"
+#include "ellc/geometry/narrow_phase.hpp"
+#include "ellc/geometry/normal_contact.hpp"
+#include "ellc/geometry/wall_contact.hpp"
+
 namespace ellc::engine {
-OverlapTest ellipsoid_overlap_test(double) { return {}; }
+
+namespace {
+
+NarrowPhaseWarmStart to_geometry(const WarmStart& warm) noexcept {
+  NarrowPhaseWarmStart result;
+  result.normal = {warm.values[0], warm.values[1], warm.values[2]};
+  result.valid = warm.valid;
+  return result;
+}
+
+WarmStart from_geometry(const NarrowPhaseWarmStart& warm) noexcept {
+  WarmStart result;
+  result.values[0] = warm.normal[0];
+  result.values[1] = warm.normal[1];
+  result.values[2] = warm.normal[2];
+  result.valid = warm.valid;
+  return result;
+}
+
+// Calls `use` with the posed ellipsoid of the body: the prebuilt one when it sits where the body
+// is, else (periodic images) one built here.
+template <typename Use>
+auto with_shape(const BodyRef& body, Use&& use) noexcept {
+  if (body.shape != nullptr && body.shape->center() == body.centre) return use(*body.shape);
+  return use(Ellipsoid(body.semi_axes, Pose{body.centre, body.orientation}));
+}
+
+PairSolution with_law(const NarrowPhaseResult& found, double mean_radius_sum, ContactHistory& history,
+                      const NormalContext& context) noexcept {
+  PairSolution solution;
+  if (found.status == NarrowPhaseStatus::failed) {
+    solution.status = PairStatus::failed;
+    return solution;
+  }
+  if (found.status == NarrowPhaseStatus::separated || !(found.geometry.overlap > 0.0)) return solution;
+  const NormalContact contact = normal_contact(found.geometry, context.material, mean_radius_sum, context.hertz,
+                                               context.law, history.max_overlap);
+  history.constants = contact.constants;
+  solution.status = PairStatus::contact;
+  solution.normal = found.geometry.normal;
+  solution.point = contact.application_point;
+  solution.overlap = found.geometry.overlap;
+  solution.law = contact.law;
+  solution.constants = &history.constants;
+  return solution;
+}
+
+}  // namespace
+
+PairSolution solve_ellipsoid_pair(const BodyRef& body_i, const BodyRef& body_j, ContactHistory& history,
+                                  const NormalContext& context) noexcept {
+  const NarrowPhaseWarmStart warm = to_geometry(history.warm_start);
+  const NarrowPhaseResult found = with_shape(body_i, [&](const Ellipsoid& ellipsoid_i) {
+    return with_shape(body_j, [&](const Ellipsoid& ellipsoid_j) {
+      return ellipsoid_contact(ellipsoid_i, ellipsoid_j, warm.valid ? &warm : nullptr);
+    });
+  });
+  if (found.status != NarrowPhaseStatus::failed) history.warm_start = from_geometry(found.warm_start);
+  return with_law(found, body_i.mean_radius + body_j.mean_radius, history, context);
+}
+
+PairSolution solve_ellipsoid_wall(const BodyRef& body, const Wall& wall, ContactHistory& history,
+                                  const NormalContext& context) noexcept {
+  const Plane plane{Eigen::Vector3d(0.0, 0.0, wall.position), Eigen::Vector3d(0.0, 0.0, wall.side)};
+  return with_shape(body, [&](const Ellipsoid& ellipsoid) {
+    return with_law(wall_contact(ellipsoid, plane), wall_mean_radius_sum(ellipsoid), history, context);
+  });
+}
+
+OverlapTest ellipsoid_overlap_test(double margin) {
+  return [margin](const Eigen::Vector3d& axes_a, const Eigen::Vector3d& centre_a, const Eigen::Quaterniond& rotation_a,
+                  const Eigen::Vector3d& axes_b, const Eigen::Vector3d& centre_b, const Eigen::Quaterniond& rotation_b) {
+    const Ellipsoid a(axes_a * (1.0 + margin), Pose{centre_a, rotation_a});
+    const Ellipsoid b(axes_b * (1.0 + margin), Pose{centre_b, rotation_b});
+    return ellipsoid_contact(a, b).status != NarrowPhaseStatus::separated;  // failed counts as overlap
+  };
+}
+
 }  // namespace ellc::engine

@@ -1,6 +1,7 @@
 #include "ellc/engine/packing.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <numeric>
 #include <stdexcept>
@@ -138,9 +139,20 @@ ParticleSet generate_packing(const PackingSpec& spec, const Box& box, double flo
       break;
     }
   }
-  for (std::size_t index = 0; index < drawn.size(); ++index)
-    particles.add(static_cast<std::uint32_t>(index), drawn[index].axes, spec.density, drawn[index].centre,
-                  drawn[index].rotation);
+  // Ids in spatial order (z layers, then y rows, then x), so that neighbours sit close in memory.
+  const double layer = 2.0 * spec.mean_radius;
+  const auto cell = [&](const Candidate& c) {
+    return std::array<long, 3>{std::lround(std::floor(c.centre.z() / layer)), std::lround(std::floor(c.centre.y() / layer)),
+                               std::lround(std::floor(c.centre.x() / layer))};
+  };
+  std::vector<std::size_t> spatial(drawn.size());
+  std::iota(spatial.begin(), spatial.end(), std::size_t{0});
+  std::stable_sort(spatial.begin(), spatial.end(),
+                   [&](std::size_t l, std::size_t r) { return cell(drawn[l]) < cell(drawn[r]); });
+  for (std::size_t rank = 0; rank < spatial.size(); ++rank) {
+    const Candidate& particle = drawn[spatial[rank]];
+    particles.add(static_cast<std::uint32_t>(rank), particle.axes, spec.density, particle.centre, particle.rotation);
+  }
   return particles;
 }
 

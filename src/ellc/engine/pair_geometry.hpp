@@ -11,6 +11,10 @@
 #include "ellc/engine/settings.hpp"
 #include "ellc/law/contact_law.hpp"
 
+namespace ellc {
+class Ellipsoid;
+}
+
 namespace ellc::engine {
 
 enum class PairStatus { contact, separated, failed };
@@ -39,6 +43,7 @@ struct BodyRef {
   Eigen::Vector3d centre;  // image position for periodic neighbours
   const Eigen::Quaterniond& orientation;
   double mean_radius;
+  const Ellipsoid* shape = nullptr;  // prebuilt for this step (ellipsoids; null → built on demand)
 };
 
 // Two bodies; `spheres` selects the closed-form path. Updates the history's constants and

@@ -33,6 +33,7 @@ Simulation::Simulation(const EngineSettings& settings, ParticleSet particles, co
     is_sphere_[slot] = axes.x() == axes.y() && axes.x() == axes.z();
   }
   omega_world_.assign(count, Eigen::Vector3d::Zero());
+  shapes_.assign(count, Ellipsoid(Eigen::Vector3d::Ones()));
   for (int wall = 0; wall < 2; ++wall) {
     wall_history_[wall].assign(count, ContactHistory{});
     wall_results_[wall].assign(count, WallResult{});
@@ -121,6 +122,8 @@ void Simulation::compute_forces() {
 void Simulation::evaluate_walls_and_reset(std::size_t slot) {
   auto& p = particles_;
   omega_world_[slot] = p.orientation[slot] * p.angular_velocity[slot];
+  if (is_sphere_[slot] == 0) shapes_[slot] = Ellipsoid(p.semi_axes[slot], Pose{p.position[slot], p.orientation[slot]});
+  const Ellipsoid* shape = is_sphere_[slot] == 0 ? &shapes_[slot] : nullptr;
   Eigen::Vector3d force = Eigen::Vector3d::Zero();
   Eigen::Vector3d torque = Eigen::Vector3d::Zero();
   const ResponseParameters parameters = response_parameters(settings_.contact.wall_friction);
@@ -132,7 +135,7 @@ void Simulation::evaluate_walls_and_reset(std::size_t slot) {
     const double reach = p.bounding_radius[slot] - wall.side * (p.position[slot].z() - wall.position);
     PairSolution solution;
     if (reach > 0.0) {
-      const BodyRef body{p.semi_axes[slot], p.position[slot], p.orientation[slot], p.mean_radius[slot]};
+      const BodyRef body{p.semi_axes[slot], p.position[slot], p.orientation[slot], p.mean_radius[slot], shape};
       solution = solve_wall(body, wall, is_sphere_[slot] != 0, history, normal_context_);
     }
     if (solution.status == PairStatus::failed) {
@@ -184,8 +187,8 @@ void Simulation::evaluate_pairs() {
     const double reach = p.bounding_radius[i] + p.bounding_radius[j];
     PairSolution solution;
     if ((centre_j - p.position[i]).squaredNorm() < reach * reach) {
-      const BodyRef body_i{p.semi_axes[i], p.position[i], p.orientation[i], p.mean_radius[i]};
-      const BodyRef body_j{p.semi_axes[j], centre_j, p.orientation[j], p.mean_radius[j]};
+      const BodyRef body_i{p.semi_axes[i], p.position[i], p.orientation[i], p.mean_radius[i], &shapes_[i]};
+      const BodyRef body_j{p.semi_axes[j], centre_j, p.orientation[j], p.mean_radius[j], &shapes_[j]};
       solution = solve_pair(body_i, body_j, is_sphere_[i] != 0 && is_sphere_[j] != 0, history, normal_context_);
     }
     if (solution.status == PairStatus::failed) {

@@ -19,6 +19,7 @@
 #include "ellc/engine/pair_geometry.hpp"
 #include "ellc/engine/particles.hpp"
 #include "ellc/engine/settings.hpp"
+#include "ellc/geometry/ellipsoid.hpp"
 
 namespace ellc::engine {
 
@@ -118,6 +119,7 @@ class Simulation {
   double shear_modulus_ = 0.0;  // G_e of the particle material with itself
   std::vector<char> is_sphere_;
   std::vector<Eigen::Vector3d> omega_world_;
+  std::vector<Ellipsoid> shapes_;  // posed ellipsoids of this step (non-spheres only)
   std::vector<Eigen::Vector3d> reference_position_;  // at the last neighbour-list build
   std::vector<PairSlot> pairs_;
   std::vector<PairResult> pair_results_;

@@ -177,6 +177,7 @@ void Simulation::read_state(std::istream& in) {
     is_sphere_[slot] = axes.x() == axes.y() && axes.x() == axes.z();
   }
   omega_world_.assign(count, Eigen::Vector3d::Zero());
+  shapes_.assign(count, Ellipsoid(Eigen::Vector3d::Ones()));
 }
 
 }  // namespace ellc::engine

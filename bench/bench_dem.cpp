@@ -1,0 +1,155 @@
+// bench_dem: particle-timesteps per second of the DEM engine on a dense packing of 10^4
+// ellipsoids (Becker–Kamlah law, Hale), and in the same run the same packing as spheres of the
+// same volume with plain Hertz. The ratio ellipsoid / sphere is reported as a counter.
+//
+// Packing (untimed): random sequential insertion (exact ellipsoid overlap test) at 30 % solid,
+// pressed by the top wall to 60 % solid in about 1500 steps and held for 300: a confined packing
+// with several contacts per particle. The sphere run starts from the same positions (spheres of
+// the same volume) after 100 untimed steps. ELLC_BENCH_DEM_PARTICLES overrides N = 10^4,
+// ELLC_BENCH_DEM_STEPS the 100 timed steps.
+
+#include <benchmark/benchmark.h>
+
+#include <chrono>
+#include <cstdlib>
+#include <memory>
+
+#include "ellc/engine/packing.hpp"
+#include "ellc/engine/simulation.hpp"
+#include "ellc/engine/time_step.hpp"
+
+namespace {
+
+using namespace ellc::engine;
+
+std::size_t particle_count() {
+  if (const char* text = std::getenv("ELLC_BENCH_DEM_PARTICLES")) return std::strtoul(text, nullptr, 10);
+  return 10000;
+}
+
+struct Packing {
+  ParticleSet particles;
+  Box box;
+  double top = 0.0;
+};
+
+constexpr double kDensity = 4.7e-3 * 1000.0;  // ng/µm³, NMC with mass scaling 1000
+
+const Packing& loose_packing() {
+  static const Packing packing = [] {
+    PackingSpec spec;
+    spec.count = particle_count();
+    spec.mean_radius = 4.0;
+    spec.radius_spread = 0.1;
+    spec.seed = 2024;
+    spec.density = kDensity;
+    spec.insertion_fraction = 0.3;
+    Packing result;
+    const double side = std::cbrt(static_cast<double>(spec.count) * 4.0 / 3.0 * 3.14159 * 64.0 / 0.3 / 2.0);
+    result.box = {side, side};  // about twice as wide as tall
+    const ParticleSet loose = generate_packing(spec, result.box, 0.0, ellipsoid_overlap_test());
+    for (std::size_t slot = 0; slot < loose.size(); ++slot) {
+      result.particles.add(loose.id[slot], loose.semi_axes[slot], spec.density, loose.position[slot],
+                           loose.orientation[slot]);
+      result.top = std::max(result.top, loose.position[slot].z() + loose.bounding_radius[slot]);
+    }
+    return result;
+  }();
+  return packing;
+}
+
+ParticleSet as_spheres(const ParticleSet& source, double density) {
+  ParticleSet spheres;
+  for (std::size_t slot = 0; slot < source.size(); ++slot)
+    spheres.add(source.id[slot], Eigen::Vector3d::Constant(source.mean_radius[slot]), density, source.position[slot],
+                source.orientation[slot]);
+  return spheres;
+}
+
+EngineSettings bench_settings(bool spheres, const ParticleSet& particles, const Box& box) {
+  EngineSettings settings;
+  settings.contact.material = {142000.0, 0.25, 7900.0};
+  settings.contact.normal_model = spheres ? NormalModel::hertz : NormalModel::becker_kamlah;
+  settings.contact.damping_ratio = 0.3;
+  settings.box = box;
+  settings.dt = stable_time_step(particles, kDensity, settings.contact.material);
+  settings.drag_rate = 0.5;
+  settings.max_speed = 1e6;
+  return settings;
+}
+
+// The loose packing pressed by the top wall to 60 % solid, then held: a dense, confined packing.
+const Simulation& dense_ellipsoids() {
+  static const std::unique_ptr<Simulation> simulation = [] {
+    const Packing& packing = loose_packing();
+    const EngineSettings settings = bench_settings(false, packing.particles, packing.box);
+    std::array<Wall, 2> walls{Wall{0.0, 0.0, 1, {}}, Wall{packing.top, 0.0, -1, {}}};
+    auto sim = std::make_unique<Simulation>(settings, packing.particles, walls);
+    const double solid = sim->particles().total_volume() / (packing.box.lx * packing.box.ly);
+    const double target_gap = solid / 0.6;
+    const double speed = (packing.top - target_gap) / (1500.0 * settings.dt);  // about 1500 steps of travel
+    sim->set_wall_velocity(kTopWall, -speed);
+    while (sim->gap() > target_gap) sim->step();
+    sim->set_wall_velocity(kTopWall, 0.0);
+    for (int step = 0; step < 300; ++step) sim->step();
+    return sim;
+  }();
+  return *simulation;
+}
+
+// Copy of the dense state with fresh contact histories: ellipsoids, or spheres of the same volume.
+std::unique_ptr<Simulation> dense(bool spheres) {
+  const Simulation& source = dense_ellipsoids();
+  const Packing& packing = loose_packing();
+  ParticleSet particles;
+  const ParticleSet& from = source.particles();
+  for (std::size_t slot = 0; slot < from.size(); ++slot)
+    particles.add(from.id[slot], spheres ? Eigen::Vector3d::Constant(from.mean_radius[slot]) : from.semi_axes[slot],
+                  kDensity, from.position[slot], from.orientation[slot]);
+  const EngineSettings settings = bench_settings(spheres, particles, packing.box);
+  auto sim = std::make_unique<Simulation>(settings, std::move(particles), source.walls());
+  for (int step = 0; step < 100; ++step) sim->step();  // spheres: let the changed overlaps settle
+  return sim;
+}
+
+double ellipsoid_rate = 0.0;
+double sphere_rate = 0.0;
+
+void run(benchmark::State& state, bool spheres, double& rate) {
+  auto simulation = dense(spheres);
+  const auto count = static_cast<double>(simulation->particles().size());
+  std::int64_t steps = 0;
+  const auto start = std::chrono::steady_clock::now();
+  for (auto _ : state) {
+    simulation->step();
+    ++steps;
+  }
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  rate = count * static_cast<double>(steps) / seconds;
+  const ContactCounts counts = simulation->contact_counts();
+  state.counters["particle_steps_per_s"] = rate;
+  state.counters["particles"] = count;
+  state.counters["contacts_per_particle"] = 2.0 * static_cast<double>(counts.particle_contacts) / count;
+  state.counters["candidate_pairs_per_particle"] = static_cast<double>(simulation->pairs().size()) / count;
+  state.counters["narrow_phase_failures"] = static_cast<double>(counts.narrow_phase_failures);
+}
+
+void BM_dem_ellipsoids_becker_kamlah(benchmark::State& state) { run(state, false, ellipsoid_rate); }
+void BM_dem_spheres_hertz(benchmark::State& state) { run(state, true, sphere_rate); }
+void BM_dem_ratio_ellipsoid_over_sphere(benchmark::State& state) {
+  for (auto _ : state) benchmark::DoNotOptimize(ellipsoid_rate);
+  state.counters["ellipsoid_particle_steps_per_s"] = ellipsoid_rate;
+  state.counters["sphere_particle_steps_per_s"] = sphere_rate;
+  state.counters["ratio"] = sphere_rate > 0.0 ? ellipsoid_rate / sphere_rate : 0.0;
+}
+
+std::int64_t timed_steps() {
+  if (const char* text = std::getenv("ELLC_BENCH_DEM_STEPS")) return std::strtol(text, nullptr, 10);
+  return 100;
+}
+
+BENCHMARK(BM_dem_ellipsoids_becker_kamlah)->Unit(benchmark::kMillisecond)->Iterations(timed_steps())->UseRealTime();
+BENCHMARK(BM_dem_spheres_hertz)->Unit(benchmark::kMillisecond)->Iterations(timed_steps())->UseRealTime();
+BENCHMARK(BM_dem_ratio_ellipsoid_over_sphere)->Iterations(1);
+
+}  // namespace
