@@ -1,0 +1,214 @@
+// `ellc geometry POSES.toml [--hertz hale|exact]`
+// Contact data of two posed ellipsoids (or an ellipsoid and a wall), for checking a
+// configuration by hand: contact point, common normal, overlap, curvatures and directions on both
+// sides, α, and the constants and force of the law at that overlap.
+//
+// POSES.toml: [material] (shared, optional if each body has its own), [body_I], and either
+// [body_J] or [wall]; optional [model] and max_overlap (δ_* of the contact's history, default 0).
+// A body is the table of `ellc curve` (semi_axes or aspect + mean_radius, twist_deg, material)
+// plus position = [x, y, z] and either orientation = [w, x, y, z] (unit quaternion, body → world)
+// or axis = [x, y, z] with angle_deg. The twist about the body's own x axis is applied first.
+// [wall]: point = [x, y, z], normal = [x, y, z] (into the particles' side), optional
+// [wall.material] (default: the body's). Unknown keys are rejected; bad input exits with code 2.
+
+#include <cmath>
+#include <cstdio>
+#include <memory>
+#include <numbers>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "command_registry.hpp"
+#include "ellc/geometry/narrow_phase.hpp"
+#include "ellc/geometry/normal_contact.hpp"
+#include "ellc/geometry/wall_contact.hpp"
+#include "ellc/io/case_file.hpp"
+#include "ellc/io/input_error.hpp"
+
+namespace ellc::cli {
+namespace {
+
+constexpr double kDegree = std::numbers::pi / 180.0;
+
+struct GeometryOptions {
+  std::string poses_path;
+  std::string hertz;
+};
+
+struct PosedBody {
+  BodySpec spec;
+  Pose pose;
+};
+
+struct WallSpec {
+  Plane plane;
+  std::optional<Material> material;
+};
+
+struct PosesCase {
+  PosedBody body_i;
+  std::optional<PosedBody> body_j;
+  std::optional<WallSpec> wall;
+  ModelSpec model;
+  double max_overlap = 0.0;
+  std::vector<std::string> warnings;
+};
+
+Eigen::Vector3d vector3(const std::vector<double>& values) { return {values[0], values[1], values[2]}; }
+
+Eigen::Vector3d unit_vector(TableReader& table, const char* key, const std::vector<double>& values) {
+  const Eigen::Vector3d vector = vector3(values);
+  const double length = vector.norm();
+  if (!(length > 0.0) || !std::isfinite(length))
+    table.fail(key, "[" + format_number(values[0]) + ", " + format_number(values[1]) + ", " + format_number(values[2]) + "]",
+               "a non-zero vector");
+  return vector / length;
+}
+
+// Reads the pose keys first (so read_body's finish() knows them), then the body itself.
+PosedBody read_posed_body(TableReader& table, const std::optional<Material>& shared_material,
+                          std::vector<std::string>& warnings) {
+  PosedBody body;
+  if (const auto position = table.optional_numbers("position", 3)) body.pose.position = vector3(*position);
+  const auto orientation = table.optional_numbers("orientation", 4);
+  const auto axis = table.optional_numbers("axis", 3);
+  const auto angle = table.optional_number("angle_deg");
+  if (orientation && (axis || angle))
+    throw InputError(table.source(), "[" + table.path() + "] gives both orientation and axis/angle_deg: expected one of the two");
+  Eigen::Quaterniond rotation = Eigen::Quaterniond::Identity();
+  if (orientation) {
+    const Eigen::Quaterniond q((*orientation)[0], (*orientation)[1], (*orientation)[2], (*orientation)[3]);
+    if (!(q.norm() > 1e-12))
+      table.fail("orientation", "a zero quaternion", "a unit quaternion [w, x, y, z] (it is normalised)");
+    rotation = q.normalized();
+  } else if (axis || angle) {
+    if (!axis) table.fail("axis", "missing", "axis = [x, y, z], required with angle_deg");
+    if (!angle) table.fail("angle_deg", "missing", "a number (degrees), required with axis");
+    rotation = Eigen::AngleAxisd(*angle * kDegree, unit_vector(table, "axis", *axis));
+  }
+  body.spec = read_body(table, shared_material, warnings);
+  body.pose.orientation = rotation * Eigen::Quaterniond(Eigen::AngleAxisd(body.spec.twist, Eigen::Vector3d::UnitX()));
+  return body;
+}
+
+WallSpec read_wall(TableReader& table) {
+  WallSpec wall;
+  const auto point = table.optional_numbers("point", 3);
+  if (!point) table.fail("point", "missing", "point = [x, y, z] on the wall");
+  const auto normal = table.optional_numbers("normal", 3);
+  if (!normal) table.fail("normal", "missing", "normal = [x, y, z], pointing to the particles' side");
+  wall.plane = {vector3(*point), unit_vector(table, "normal", *normal)};
+  if (auto material = table.optional_table("material")) wall.material = read_material(*material);
+  table.finish();
+  return wall;
+}
+
+PosesCase read_poses(const std::string& path) {
+  const toml::table root_table = parse_toml_file(path);
+  TableReader root(root_table, "", path);
+  PosesCase poses;
+  std::optional<Material> shared_material;
+  if (auto material = root.optional_table("material")) shared_material = read_material(*material);
+  {
+    auto body = root.table("body_I");
+    poses.body_i = read_posed_body(body, shared_material, poses.warnings);
+  }
+  auto body_j = root.optional_table("body_J");
+  auto wall = root.optional_table("wall");
+  if (body_j && wall) throw InputError(path, "the file gives both [body_J] and [wall]: expected one of the two");
+  if (!body_j && !wall) root.fail("body_J", "missing", "a table [body_J] or a table [wall]");
+  if (body_j) poses.body_j = read_posed_body(*body_j, shared_material, poses.warnings);
+  if (wall) poses.wall = read_wall(*wall);
+  if (auto model = root.optional_table("model")) poses.model = read_model(*model);
+  poses.max_overlap = root.number_or("max_overlap", 0.0);
+  if (poses.max_overlap < 0.0) root.fail("max_overlap", poses.max_overlap, "a finite number >= 0 (µm)");
+  root.finish();
+  return poses;
+}
+
+void print_vector(const char* label, const Eigen::Vector3d& v) {
+  // + 0.0 prints −0 as 0.
+  std::printf("  %-22s (%.10g, %.10g, %.10g)\n", label, v.x() + 0.0, v.y() + 0.0, v.z() + 0.0);
+}
+
+void print_curvature(const std::string& side, const SurfaceCurvature& c) {
+  std::printf("  %-22s kappa_1 = %.10g, kappa_2 = %.10g 1/µm%s\n", ("curvature " + side).c_str(), c.kappa_1, c.kappa_2,
+              c.umbilic() ? "  (umbilic)" : "");
+  print_vector("  direction_1", c.direction_1);
+  print_vector("  direction_2", c.direction_2);
+}
+
+void print_law(const NormalContact& contact, HertzMode mode) {
+  const ContactConstants& c = contact.constants;
+  std::printf("  law (Hertz %s):\n", mode == HertzMode::exact ? "exact" : "hale");
+  std::printf("    R_e = %.10g µm, e = %.10g, f1 = %.10g, f2 = %.10g\n", c.equivalent_radius, std::sqrt(c.eccentricity_sq),
+              c.f1, c.f2);
+  std::printf("    delta_Y = %.10g µm, F_pY = %.10g µN, delta_max = %.10g µm\n", c.yield_overlap, c.yield_force,
+              c.plastic_limit_overlap);
+  std::printf("    force = %.10g µN (%s), delta_* after = %.10g µm\n", contact.law.force, regime_name(contact.law.regime),
+              contact.law.max_overlap);
+  print_vector("  force on J", contact.force_on_j);
+  print_vector("  application point", contact.application_point);
+}
+
+void run_geometry(const GeometryOptions& options) {
+  PosesCase poses = read_poses(options.poses_path);
+  if (!options.hertz.empty()) poses.model.hertz = options.hertz == "exact" ? HertzMode::exact : HertzMode::hale;
+  for (const auto& warning : poses.warnings) std::fprintf(stderr, "ellc: warning: %s\n", warning.c_str());
+
+  const Ellipsoid body_i(poses.body_i.spec.semi_axes, poses.body_i.pose);
+  NarrowPhaseResult result;
+  ContactMaterial material;
+  double mean_radius_sum = 0.0;
+  if (poses.body_j) {
+    const Ellipsoid body_j(poses.body_j->spec.semi_axes, poses.body_j->pose);
+    result = ellipsoid_contact(body_i, body_j);
+    material = mix(poses.body_i.spec.material, poses.body_j->spec.material);
+    mean_radius_sum = body_i.mean_radius() + body_j.mean_radius();
+  } else {
+    result = wall_contact(body_i, poses.wall->plane);
+    material = mix(poses.body_i.spec.material, poses.wall->material.value_or(poses.body_i.spec.material));
+    mean_radius_sum = wall_mean_radius_sum(body_i);
+  }
+
+  const ContactGeometry& g = result.geometry;
+  std::printf("ellc geometry: %s (%s)\n", options.poses_path.c_str(), poses.body_j ? "ellipsoid pair" : "ellipsoid and wall");
+  std::printf("  status                 %s\n", status_name(result.status));
+  if (result.status == NarrowPhaseStatus::failed)
+    throw std::runtime_error("the narrow phase did not converge for this configuration (status failed)");
+  std::printf("  overlap                %.10g µm%s\n", g.overlap,
+              result.status == NarrowPhaseStatus::separated ? "  (<= 0: minus the gap along the normal)" : "");
+  print_vector("normal (I to J)", g.normal);
+  print_vector("contact point", g.point);
+  print_vector("surface point I", g.surface_point_i);
+  print_vector(poses.body_j ? "surface point J" : "surface point wall", g.surface_point_j);
+  std::printf("  newton iterations      %d (contact-function iterations %d)\n", result.iterations,
+              result.contact_function_iterations);
+  if (result.status != NarrowPhaseStatus::contact) return;
+  print_curvature("I", g.curvature_i);
+  print_curvature(poses.body_j ? "J" : "wall", g.curvature_j);
+  std::printf("  alpha                  %.10g deg\n", g.alpha / kDegree);
+  std::printf("  r_hat I+J              %.10g µm%s\n", mean_radius_sum, poses.body_j ? "" : "  (wall: 2 r_hat, mirror image)");
+  const NormalContact contact =
+      normal_contact(g, material, mean_radius_sum, poses.model.hertz, poses.model.law, poses.max_overlap);
+  if (const std::string error = validation_error(contact.constants); !error.empty())
+    throw InputError(options.poses_path, "the contact constants of this configuration: " + error);
+  print_law(contact, poses.model.hertz);
+}
+
+const RegisterCommand registration([](CLI::App& root) {
+  auto options = std::make_shared<GeometryOptions>();
+  CLI::App* command =
+      root.add_subcommand("geometry", "Contact point, normal, overlap, curvatures and force of two posed bodies");
+  command->add_option("poses", options->poses_path,
+                      "Poses file (TOML): [material], [body_I], [body_J] or [wall], optional [model], max_overlap")
+      ->required();
+  command->add_option("--hertz", options->hertz, "Hertz solution: hale or exact (overrides [model].hertz)")
+      ->check(CLI::IsMember({"hale", "exact"}));
+  command->callback([options] { run_geometry(*options); });
+});
+
+}  // namespace
+}  // namespace ellc::cli
