@@ -19,8 +19,8 @@ Eigen::Vector3d angular_velocity(const Eigen::Vector3d& angular_momentum, const 
 namespace {
 void forget(double* history) { std::fill(history, history + HistoryLayout::size(), 0.0); }
 
-Eigen::Vector3d point_velocity(const BodyState& body, const Eigen::Vector3d& point) {
-  return body.velocity + body.angular_velocity.cross(point - body.position);
+Eigen::Vector3d point_velocity(const BodyState& body, const ellc::Ellipsoid& shape, const Eigen::Vector3d& point) {
+  return body.velocity + body.angular_velocity.cross(point - shape.center());
 }
 
 ellc::NarrowPhaseWarmStart read_warm_start(const double* history) {
@@ -38,9 +38,19 @@ void write_warm_start(const ellc::NarrowPhaseWarmStart& warm, double* history) {
 
 PairResult evaluate_pair(const BodyState& a, const BodyState& b, const PairCoefficients& coefficients,
                          ellc::HertzMode mode, double timestep, double* history) {
-  PairResult result;
   const ellc::Ellipsoid body_a(a.semi_axes, {a.position, a.orientation});
   const ellc::Ellipsoid body_b(b.semi_axes, {b.position, b.orientation});
+  return evaluate_pair({body_a, body_a.mean_radius(), a}, {body_b, body_b.mean_radius(), b}, coefficients, mode,
+                       timestep, history);
+}
+
+PairResult evaluate_pair(const PosedBody& posed_a, const PosedBody& posed_b, const PairCoefficients& coefficients,
+                         ellc::HertzMode mode, double timestep, double* history) {
+  PairResult result;
+  const ellc::Ellipsoid& body_a = posed_a.ellipsoid;
+  const ellc::Ellipsoid& body_b = posed_b.ellipsoid;
+  const BodyState& a = posed_a.motion;
+  const BodyState& b = posed_b.motion;
   const ellc::NarrowPhaseWarmStart warm = read_warm_start(history);
   const ellc::NarrowPhaseResult narrow = ellc::ellipsoid_contact(body_a, body_b, &warm);
   result.iterations = narrow.iterations;
@@ -59,7 +69,7 @@ PairResult evaluate_pair(const BodyState& a, const BodyState& b, const PairCoeff
 
   // Normal: the Becker–Kamlah law with δ_* from the history, through the geometry layer.
   const ellc::NormalContact normal =
-      ellc::normal_contact(geometry, coefficients.material, body_a.mean_radius() + body_b.mean_radius(), mode,
+      ellc::normal_contact(geometry, coefficients.material, posed_a.mean_radius + posed_b.mean_radius, mode,
                            coefficients.law, history[HistoryLayout::max_overlap]);
   result.law = normal.law;
   history[HistoryLayout::max_overlap] = normal.law.max_overlap;
@@ -67,7 +77,7 @@ PairResult evaluate_pair(const BodyState& a, const BodyState& b, const PairCoeff
   // Damping and friction scale with the Hertz tangent stiffness k_n = dF_H/dδ.
   const double effective_mass = a.mass * b.mass / (a.mass + b.mass);
   const double normal_stiffness = 1.5 * normal.constants.hertz_coefficient * std::sqrt(geometry.overlap);
-  const Eigen::Vector3d relative_velocity = point_velocity(b, geometry.point) - point_velocity(a, geometry.point);
+  const Eigen::Vector3d relative_velocity = point_velocity(b, body_b, geometry.point) - point_velocity(a, body_a, geometry.point);
   const double normal_speed = relative_velocity.dot(n);  // > 0 when separating
   const double normal_damping = 2.0 * coefficients.normal_damping * std::sqrt(effective_mass * normal_stiffness);
   result.normal_force = std::max(normal.law.force - normal_damping * normal_speed, 0.0);
@@ -98,8 +108,8 @@ PairResult evaluate_pair(const BodyState& a, const BodyState& b, const PairCoeff
   }
 
   result.force_on_b = force_on_b;
-  result.torque_on_a = (geometry.point - a.position).cross(-force_on_b);
-  result.torque_on_b = (geometry.point - b.position).cross(force_on_b);
+  result.torque_on_a = (geometry.point - body_a.center()).cross(-force_on_b);
+  result.torque_on_b = (geometry.point - body_b.center()).cross(force_on_b);
   return result;
 }
 

@@ -66,6 +66,16 @@ struct PairResult {
 [[nodiscard]] PairResult evaluate_pair(const BodyState& a, const BodyState& b, const PairCoefficients& coefficients,
                                        ellc::HertzMode mode, double timestep, double* history);
 
+// The same with the posed ellipsoids and their mean radii r̂ built by the caller (once per atom
+// and step in the pair style). Only velocity, angular_velocity and mass are read from the states.
+struct PosedBody {
+  const ellc::Ellipsoid& ellipsoid;
+  double mean_radius;
+  const BodyState& motion;
+};
+[[nodiscard]] PairResult evaluate_pair(const PosedBody& a, const PosedBody& b, const PairCoefficients& coefficients,
+                                       ellc::HertzMode mode, double timestep, double* history);
+
 // ω = R I⁻¹ Rᵀ L for a solid ellipsoid of mass m and semi-axes (a, b, c).
 [[nodiscard]] Eigen::Vector3d angular_velocity(const Eigen::Vector3d& angular_momentum,
                                                const Eigen::Quaterniond& orientation,

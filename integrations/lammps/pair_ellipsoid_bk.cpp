@@ -189,7 +189,6 @@ void PairEllipsoidBK::gather_bodies() {
   const int nmax = atom->nmax;
   if (bodies_.size() < static_cast<std::size_t>(nmax) * kBodyValues) {
     bodies_.resize(static_cast<std::size_t>(nmax) * kBodyValues);
-    angular_velocity_.resize(static_cast<std::size_t>(nmax) * 3);
   }
   bodies_compute_->compute_peratom();
   bodies_compute_->invoked_peratom = update->ntimestep;
@@ -219,11 +218,9 @@ BodyState PairEllipsoidBK::body_state(int index) const {
   const double* body = &bodies_[static_cast<std::size_t>(index) * kBodyValues];
   const double* x = atom->x[index];
   const double* v = atom->v[index];
-  const double* w = &angular_velocity_[static_cast<std::size_t>(index) * 3];
   BodyState state;
   state.position = {x[0], x[1], x[2]};
   state.velocity = {v[0], v[1], v[2]};
-  state.angular_velocity = {w[0], w[1], w[2]};
   state.semi_axes = {body[0], body[1], body[2]};
   state.orientation = Eigen::Quaterniond(body[3], body[4], body[5], body[6]);
   state.mass = atom->rmass[index];
@@ -251,21 +248,26 @@ void PairEllipsoidBK::compute(int eflag, int vflag) {
   const int history_size = HistoryLayout::size();
   std::vector<double> scratch;
 
+  // Per atom, owned and ghost, once per step: the posed ellipsoid, r̂ and the motion.
+  shapes_.clear();
+  motions_.resize(static_cast<std::size_t>(nall));
+  mean_radii_.resize(static_cast<std::size_t>(nall));
   for (int index = 0; index < nall; ++index) {
     const double* body = &bodies_[static_cast<std::size_t>(index) * kBodyValues];
-    const double* momentum = atom->angmom[index];
+    const auto slot = static_cast<std::size_t>(index);
     const double largest = std::max({body[0], body[1], body[2]});
-    if (largest > type_radius_[static_cast<std::size_t>(type[index])] && type_radius_[static_cast<std::size_t>(type[index])] > 0.0)
+    const double type_radius = type_radius_[static_cast<std::size_t>(type[index])];
+    if (largest > type_radius && type_radius > 0.0)
       fail_one(error, FLERR, style_prefix() + "atom " + std::to_string(tag[index]) +
                              " is larger than any atom of its type was at the start of the run; re-run to update "
                              "the contact cutoffs");
-    Eigen::Map<Eigen::Vector3d> omega(&angular_velocity_[static_cast<std::size_t>(index) * 3]);
+    BodyState& motion = motions_[slot];
+    motion = body_state(index);
     if (largest > 0.0)
-      omega = angular_velocity({momentum[0], momentum[1], momentum[2]},
-                               Eigen::Quaterniond(body[3], body[4], body[5], body[6]), {body[0], body[1], body[2]},
-                               atom->rmass[index]);
-    else
-      omega.setZero();
+      motion.angular_velocity = angular_velocity({atom->angmom[index][0], atom->angmom[index][1], atom->angmom[index][2]},
+                                                 motion.orientation, motion.semi_axes, motion.mass);
+    shapes_.emplace_back(motion.semi_axes, ellc::Pose{motion.position, motion.orientation});
+    mean_radii_[slot] = shapes_.back().mean_radius();
   }
 
   const NeighList* neighbors = list;
@@ -296,9 +298,11 @@ void PairEllipsoidBK::compute(int eflag, int vflag) {
       const bool i_is_a = tag[i] < tag[j];
       const int a = i_is_a ? i : j;
       const int b = i_is_a ? j : i;
-      const PairResult result =
-          evaluate_pair(body_state(a), body_state(b), pair_coefficients_[type_index(type[i], type[j])], hertz_mode_,
-                        timestep, history);
+      const auto sa = static_cast<std::size_t>(a), sb = static_cast<std::size_t>(b);
+      const PairResult result = evaluate_pair({shapes_[sa], mean_radii_[sa], motions_[sa]},
+                                              {shapes_[sb], mean_radii_[sb], motions_[sb]},
+                                              pair_coefficients_[type_index(type[i], type[j])], hertz_mode_, timestep,
+                                              history);
       if (result.geometry_failed && narrow_phase_failures_++ == 0)
         error->warning(FLERR, style_prefix() + "the narrow phase did not converge for atoms " + std::to_string(tag[a]) +
                                   " and " + std::to_string(tag[b]) + " at step " + std::to_string(update->ntimestep) +
@@ -372,7 +376,8 @@ void PairEllipsoidBK::read_restart(FILE* file) {
 }
 
 double PairEllipsoidBK::memory_usage() {
-  return static_cast<double>((bodies_.capacity() + angular_velocity_.capacity()) * sizeof(double));
+  return static_cast<double>(bodies_.capacity() * sizeof(double) + shapes_.capacity() * sizeof(ellc::Ellipsoid) +
+                             motions_.capacity() * sizeof(BodyState) + mean_radii_.capacity() * sizeof(double));
 }
 
 }  // namespace ellc_lammps

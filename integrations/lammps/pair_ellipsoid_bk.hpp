@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "contact_model.hpp"
+#include "ellc/geometry/ellipsoid.hpp"
 #include "lammps_includes.hpp"
 #include "pair_coefficients.hpp"
 
@@ -62,7 +63,9 @@ class PairEllipsoidBK : public LAMMPS_NS::Pair {
   FixContactHistory* history_ = nullptr;
   LAMMPS_NS::Compute* bodies_compute_ = nullptr;
   std::vector<double> bodies_;            // per atom, owned + ghost: kBodyValues
-  std::vector<double> angular_velocity_;  // per atom, owned + ghost: 3
+  std::vector<ellc::Ellipsoid> shapes_;   // per atom, owned + ghost, rebuilt every step
+  std::vector<BodyState> motions_;        // velocity, angular velocity, mass (same indexing)
+  std::vector<double> mean_radii_;        // r̂ = (abc)^{1/3}
   bool warned_aspect_ = false;
   long narrow_phase_failures_ = 0;
 };

@@ -1,0 +1,111 @@
+// particle-timesteps per second of pair_style ellipsoid/bk on a dense packing of ellipsoids, next
+// to LAMMPS's own pair_style granular (hertz/material, Mindlin friction) on the same lattice as
+// spheres of the same volume, in the same process. Single MPI rank.
+//
+//   bench_lammps [--benchmark_min_time=2] [--benchmark_format=json]
+//
+// Both systems: periodic simple-cubic lattice of 10 x 10 x 10 particles, spacing 9.0 um, NMC
+// (E = 142000 MPa, nu = 0.25), friction 0.3, every neighbor pair starting in contact (volume
+// fraction 0.6). Ellipsoids: semi-axes 6 x 5 x 4.2 um, random orientations, Becker-Kamlah normal
+// law. Spheres: radius (6 * 5 * 4.2)^(1/3) = 5.01 um, Hertz. Each iteration runs 20 steps after a
+// 200-step settling run; counters give particle-timesteps/s and contacts per particle.
+
+#include <benchmark/benchmark.h>
+#include <mpi.h>
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "fix_contact_history.hpp"
+#include "lammps_includes.hpp"
+#include "pair_ellipsoid_bk.hpp"
+#include "register_styles.hpp"
+
+#include <input.h>
+
+namespace {
+
+constexpr int kCells = 10;
+constexpr int kStepsPerIteration = 20;
+
+struct Session {
+  LAMMPS_NS::LAMMPS* lmp = nullptr;
+  Session() {
+    std::vector<std::string> words{"bench_lammps", "-log", "none", "-screen", "none", "-nocite"};
+    std::vector<char*> argv;
+    for (auto& word : words) argv.push_back(word.data());
+    lmp = new LAMMPS_NS::LAMMPS(static_cast<int>(argv.size()), argv.data(), MPI_COMM_WORLD);
+    ellc_lammps::register_styles(lmp, ellc_lammps::built_against_version());
+  }
+  ~Session() { delete lmp; }
+  Session(const Session&) = delete;
+  Session& operator=(const Session&) = delete;
+  void run(const std::vector<std::string>& commands) const {
+    for (const auto& command : commands) lmp->input->one(command);
+  }
+};
+
+std::vector<std::string> lattice(const std::string& atom_style) {
+  const std::string n = std::to_string(kCells);
+  return {"units micro",        "atom_style " + atom_style,   "boundary p p p",
+          "lattice sc 9.0",     "region box block 0 " + n + " 0 " + n + " 0 " + n, "create_box 1 box",
+          "create_atoms 1 box", "neighbor 1.0 bin",            "neigh_modify every 1 delay 0 check yes",
+          "timestep 5e-5",      "velocity all create 5e12 8675309 dist gaussian mom yes rot no"};
+}
+
+void report(benchmark::State& state, double contacts_per_particle) {
+  const double particle_steps = static_cast<double>(kCells * kCells * kCells) * kStepsPerIteration;
+  state.counters["particle_timesteps_per_s"] =
+      benchmark::Counter(particle_steps, benchmark::Counter::kIsIterationInvariantRate);
+  state.counters["contacts_per_particle"] = contacts_per_particle;
+}
+
+void EllipsoidBK(benchmark::State& state) {
+  const Session session;
+  auto commands = lattice("ellipsoid");
+  commands.insert(commands.end(),
+                  {"set type 1 shape 12 10 8.4", "set type 1 quat/random 4711", "set type 1 density 4.7",
+                   "pair_style ellipsoid/bk",
+                   "pair_coeff 1 1 1.42e8 0.25 7.9e6 friction 0.3 damping 0.1 tangential_damping 0.1",
+                   "fix integrate all nve/asphere", "run 200"});
+  session.run(commands);
+  const std::string step = "run " + std::to_string(kStepsPerIteration) + " pre no post no";
+  for (auto _ : state) session.run({step});
+  auto* modify = session.lmp->modify;
+  auto* history = dynamic_cast<ellc_lammps::FixContactHistory*>(
+      modify->fix[modify->find_fix(ellc_lammps::PairEllipsoidBK::kHistoryFixId)]);
+  report(state, 2.0 * static_cast<double>(history->active_contacts()) / (kCells * kCells * kCells));
+}
+
+void GranularHertzMaterial(benchmark::State& state) {
+  const Session session;
+  auto commands = lattice("sphere");
+  commands.insert(commands.end(),
+                  {"set type 1 diameter 10.0266", "set type 1 density 4.7", "comm_modify vel yes",
+                   "pair_style granular",
+                   "pair_coeff * * hertz/material 1.42e8 0.1 0.25 tangential mindlin NULL 1.0 0.3",
+                   "fix integrate all nve/sphere", "compute touching all contact/atom",
+                   "compute contacts all reduce sum c_touching", "thermo_style custom step c_contacts", "run 200"});
+  session.run(commands);
+  const std::string step = "run " + std::to_string(kStepsPerIteration) + " pre no post no";
+  for (auto _ : state) session.run({step});
+  session.run({"run 0"});
+  auto* modify = session.lmp->modify;
+  const double contacts = modify->compute[modify->find_compute("contacts")]->compute_scalar();
+  report(state, contacts / (kCells * kCells * kCells));
+}
+
+BENCHMARK(EllipsoidBK)->Unit(benchmark::kMillisecond);
+BENCHMARK(GranularHertzMaterial)->Unit(benchmark::kMillisecond);
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  MPI_Init(&argc, &argv);
+  benchmark::Initialize(&argc, argv);
+  benchmark::RunSpecifiedBenchmarks();
+  benchmark::Shutdown();
+  MPI_Finalize();
+  return 0;
+}
