@@ -4,18 +4,25 @@ from __future__ import annotations
 import numpy as np
 
 from .curves import law_forces
-from .data import complete_runs
+from .data import complete_runs, load_run
 from .errors import force_errors
 from .fit import fit_case, fit_exponential, lambda_fem, loading_points
 from .law_oracle import PAPER
 from .plotting import figure, save
+from .tables import markdown_table, pct
 
 N_SCAN = np.round(np.arange(1.0, 4.01, 0.1), 2)
+CALIBRATION_MESH = "medium"
+
+
+def grid_runs() -> list:
+    """The calibration grid: runs g.. at the calibration mesh (mesh-check variants excluded)."""
+    return [r for r in complete_runs("g") if r.record["mesh_level"] == CALIBRATION_MESH]
 
 
 def per_case_fits() -> list[dict]:
     rows = []
-    for run in complete_runs("g"):
+    for run in grid_runs():
         contact = run.contact()
         free = fit_case(contact, run.overlap, run.force)
         fixed = fit_case(contact, run.overlap, run.force, n_fixed=PAPER["n"])
@@ -98,3 +105,21 @@ def plot_constants(rows: list[dict], ours: dict) -> str:
         ax.set(xlabel="R_e / r̂^{I,J}", ylabel=label)
         ax.legend(fontsize=8)
     return save(fig, "fitted_constants.png")
+
+
+def plastic_mesh_table(base: str = "g01_sphere") -> list[str]:
+    """Force of the elastic-plastic sphere case at three mesh levels (medium = base run)."""
+    runs = {"coarse": load_run(f"{base}_coarse"), "medium": load_run(base), "fine": load_run(f"{base}_fine")}
+    ref = runs["fine"] or runs["medium"]
+    if ref is None:
+        return ["(no runs yet)"]
+    body = []
+    for level, run in runs.items():
+        if run is None:
+            continue
+        rel = run.force / np.interp(run.overlap, ref.overlap, ref.force) - 1.0
+        at = {d: float(np.interp(d, run.overlap, run.force)) / 1000 for d in (0.4, 2.0, 3.0)}
+        body.append([level, str(run.record["nodes"]), f"{run.record['ccx_seconds']:.0f}",
+                     *(f"{v:.1f}" for v in at.values()), pct(float(np.abs(rel).max()))])
+    return markdown_table(["mesh", "nodes", "ccx time (s)", "F(0.4 µm) mN", "F(2 µm) mN", "F(3 µm) mN",
+                           f"max deviation from {'fine' if runs['fine'] else 'medium'}"], "lrrrrrr", body)

@@ -64,6 +64,7 @@ def main() -> int:
     text = _replace(text, "elastic", elastic_table(errors))
     summary["elastic"] = {p: {lv: {"final_error": float(e["error"][-1]), "nodes": e["nodes"]}
                               for lv, e in d.items()} for p, d in errors.items()}
+    text = _replace(text, "plastic_mesh", cal.plastic_mesh_table())
     rows = cal.per_case_fits()
     if len(rows) >= 4:
         ours = cal.constants_fit(rows, "fixed")
