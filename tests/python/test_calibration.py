@@ -103,7 +103,7 @@ def test_hertz_data_beyond_the_yield_point_fails_clearly():
         ellc.calibrate([case])
 
 
-def test_fewer_than_three_geometries_keep_the_rates_of_the_prior():
+def test_fewer_than_four_geometries_keep_the_rates_of_the_prior():
     result = ellc.calibrate(synthetic_cases(noise=0.0, names=["sphere", "slim"]))
     assert not result.rates_fitted and result.amplitudes_fitted
     assert result.fit.o == ellc.TransitionFit().o and result.fit.t == ellc.TransitionFit().t

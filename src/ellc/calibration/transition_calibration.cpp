@@ -9,6 +9,7 @@
 #include <cstdio>
 #include <limits>
 #include <numbers>
+#include <optional>
 #include <sstream>
 
 #include "ellc/geometry/tip_contact.hpp"
@@ -28,6 +29,9 @@ constexpr double kEpsilonMaxUpper = 100.0;
 constexpr double kExponentLower = 0.05;
 constexpr double kExponentUpper = 20.0;
 constexpr double kRateBound = 60.0;
+// Eq. (52) has three constants; with three points it would interpolate them exactly, which
+// extrapolates wildly. The rate is fitted from four distinct R_e/r̂ on.
+constexpr std::size_t kDistinctForRate = 4;
 
 // Eq. (28) in c_c/c_Y, templated for Ceres' automatic derivatives.
 template <typename T>
@@ -109,8 +113,9 @@ double rms_error(const std::vector<LambdaSample>& samples, const TransitionPoint
 }
 
 // Step 1: (λ_max, ε_max, n) of one case, from a few starting points (the kink at ε_max makes the
-// problem non-convex); the lowest cost wins.
-TransitionPoint fit_case(const std::vector<LambdaSample>& samples, double yield_pressure_factor) {
+// problem non-convex); the lowest cost wins. With `fixed_exponent`, n is held there.
+TransitionPoint fit_case(const std::vector<LambdaSample>& samples, double yield_pressure_factor,
+                         std::optional<double> fixed_exponent = std::nullopt) {
   double largest_ratio = 0.0;
   double last_lambda = yield_pressure_factor;
   for (const LambdaSample& sample : samples) {
@@ -118,15 +123,18 @@ TransitionPoint fit_case(const std::vector<LambdaSample>& samples, double yield_
     largest_ratio = std::max(largest_ratio, sample.contact_radius_ratio);
   }
   const double lambda_start = std::clamp(last_lambda, yield_pressure_factor + 0.05, kLambdaMaxUpper * 0.5);
+  const std::vector<double> exponent_starts =
+      fixed_exponent ? std::vector<double>{*fixed_exponent} : std::vector<double>{1.0, 2.0, 3.5};
   TransitionPoint best;
   double best_cost = std::numeric_limits<double>::infinity();
   const ceres::Solver::Options options = solver_options();
   for (const double epsilon_start : {1.5, 2.5, 4.0, 7.0, 12.0}) {
-    for (const double exponent_start : {1.0, 2.0, 3.5}) {
+    for (const double exponent_start : exponent_starts) {
       double shape[2] = {lambda_start, epsilon_start};
       double exponent = exponent_start;
       ceres::Problem problem;
       add_case(problem, samples, yield_pressure_factor, shape, &exponent);
+      if (fixed_exponent) problem.SetParameterBlockConstant(&exponent);
       ceres::Solver::Summary summary;
       ceres::Solve(options, &problem, &summary);
       if (summary.final_cost < best_cost && std::isfinite(summary.final_cost)) {
@@ -138,23 +146,48 @@ TransitionPoint fit_case(const std::vector<LambdaSample>& samples, double yield_
   return best;
 }
 
-// Step 2: one n for all cases, each case keeping its own λ_max, ε_max.
-double fit_shared_exponent(std::vector<CaseCalibration>& cases, double yield_pressure_factor) {
+bool at_bound(double value, double lower, double upper) {
+  return value <= lower * (1 + 1e-6) || value >= upper * (1 - 1e-6);
+}
+
+// Whether the data of a case pins its own n: the λ profile reaches its plateau (c_c ≥ ε_max c_Y)
+// and n is not on a bound. Without a plateau, λ_max, ε_max and n trade off against each other
+// (a large n with a large ε_max mimics a saturating curve), so n must come from elsewhere.
+bool exponent_identified(const CaseCalibration& entry) {
+  return !entry.profile.empty() && entry.profile.back().contact_radius_ratio >= entry.own.epsilon_max &&
+         !at_bound(entry.own.exponent, kExponentLower, kExponentUpper);
+}
+
+// Step 2: one n for all cases (the paper's single n). Fitted jointly with every case's λ_max, ε_max
+// over the cases whose data pins n; `fallback` (the prior's n) when none does. The other cases then
+// get λ_max, ε_max with that n held fixed. Returns whether n was fitted.
+bool fit_shared_exponent(std::vector<CaseCalibration>& cases, double yield_pressure_factor, double fallback,
+                         double& exponent) {
+  std::vector<std::size_t> informative;
   std::vector<double> exponents;
-  for (const auto& entry : cases) exponents.push_back(entry.own.exponent);
-  std::nth_element(exponents.begin(), exponents.begin() + static_cast<std::ptrdiff_t>(exponents.size() / 2),
-                   exponents.end());
-  double exponent = exponents[exponents.size() / 2];
-  std::vector<std::array<double, 2>> shapes;
-  for (const auto& entry : cases) shapes.push_back({entry.own.lambda_max, entry.own.epsilon_max});
-  ceres::Problem problem;
-  for (std::size_t index = 0; index < cases.size(); ++index)
-    add_case(problem, cases[index].profile, yield_pressure_factor, shapes[index].data(), &exponent);
-  ceres::Solver::Summary summary;
-  ceres::Solve(solver_options(), &problem, &summary);
-  for (std::size_t index = 0; index < cases.size(); ++index)
-    cases[index].shared = {shapes[index][0], shapes[index][1], exponent};
-  return exponent;
+  for (std::size_t index = 0; index < cases.size(); ++index) {
+    if (!cases[index].own_exponent_fitted) continue;
+    informative.push_back(index);
+    exponents.push_back(cases[index].own.exponent);
+  }
+  exponent = fallback;
+  if (!informative.empty()) {
+    std::nth_element(exponents.begin(), exponents.begin() + static_cast<std::ptrdiff_t>(exponents.size() / 2),
+                     exponents.end());
+    exponent = exponents[exponents.size() / 2];
+    std::vector<std::array<double, 2>> shapes;
+    for (const std::size_t index : informative) shapes.push_back({cases[index].own.lambda_max, cases[index].own.epsilon_max});
+    ceres::Problem problem;
+    for (std::size_t slot = 0; slot < informative.size(); ++slot)
+      add_case(problem, cases[informative[slot]].profile, yield_pressure_factor, shapes[slot].data(), &exponent);
+    ceres::Solver::Summary summary;
+    ceres::Solve(solver_options(), &problem, &summary);
+    for (std::size_t slot = 0; slot < informative.size(); ++slot)
+      cases[informative[slot]].shared = {shapes[slot][0], shapes[slot][1], exponent};
+  }
+  for (auto& entry : cases)
+    if (!entry.own_exponent_fitted || informative.empty()) entry.shared = fit_case(entry.profile, yield_pressure_factor, exponent);
+  return !informative.empty();
 }
 
 std::size_t distinct_count(std::span<const double> values) {
@@ -226,7 +259,7 @@ ExponentialFit fit_exponential(std::span<const double> x, std::span<const double
     fit.offset = sum / static_cast<double>(x.size());
     return fit;
   }
-  if (distinct == 2) {
+  if (distinct < kDistinctForRate) {
     fit.rate = fixed_rate;
     std::tie(fit.amplitude, fit.offset) = linear_amplitude_offset(x, y, fixed_rate);
     fit.amplitude_fitted = true;
@@ -310,6 +343,9 @@ CalibrationResult calibrate(const std::vector<CalibrationCase>& cases, const Cal
     }
 
     entry.own = fit_case(entry.profile, yield_factor);
+    entry.own_exponent_fitted = exponent_identified(entry);
+    if (!entry.own_exponent_fitted)  // n is not pinned by this case: the prior's n, as the paper fixed n = 1.8
+      entry.own = fit_case(entry.profile, yield_factor, options.prior.fit.transition_exponent);
     entry.own_rms = rms_error(entry.profile, entry.own, yield_factor);
     if (entry.own.lambda_max >= kLambdaMaxUpper * (1 - 1e-6) || entry.own.epsilon_max >= kEpsilonMaxUpper * (1 - 1e-6)) {
       where << "lambda_FEM of eq. (51) shows no plateau (the fit ran to lambda_max = " << entry.own.lambda_max
@@ -320,7 +356,11 @@ CalibrationResult calibrate(const std::vector<CalibrationCase>& cases, const Cal
     result.cases.push_back(std::move(entry));
   }
 
-  result.law.fit.transition_exponent = fit_shared_exponent(result.cases, yield_factor);
+  result.exponent_fitted = fit_shared_exponent(result.cases, yield_factor, options.prior.fit.transition_exponent,
+                                               result.law.fit.transition_exponent);
+  if (!result.exponent_fitted)
+    result.warnings.push_back("no case pins n (with n free, no fit reaches its lambda plateau inside the data, or n runs to a bound): n kept from the prior (" +
+                              format_number(options.prior.fit.transition_exponent) + ")");
   std::vector<double> radius_ratios;
   std::vector<double> lambda_maxima;
   std::vector<double> epsilon_maxima;
@@ -355,7 +395,7 @@ CalibrationResult calibrate(const std::vector<CalibrationCase>& cases, const Cal
   result.rates_fitted = lambda_fit.rate_fitted;
   result.amplitudes_fitted = lambda_fit.amplitude_fitted;
   if (!result.rates_fitted)
-    result.warnings.push_back(std::string("fewer than 3 distinct R_e/r^ among the cases: o and t kept from the prior") +
+    result.warnings.push_back(std::string("fewer than 4 distinct R_e/r^ among the cases: o and t kept from the prior") +
                               (result.amplitudes_fitted ? "" : ", and m and s too"));
   if (std::abs(fit.lambda_rate) >= kRateBound * (1 - 1e-6) || std::abs(fit.epsilon_rate) >= kRateBound * (1 - 1e-6))
     result.warnings.push_back("an eq. (52) rate ran to its bound +-60: the cases span too little R_e/r^ to fix it");
@@ -392,7 +432,8 @@ std::string model_table_toml(const CalibrationResult& result) {
     out << line;
   }
   out << "# fitted: " << (result.amplitudes_fitted ? "m, " : "") << (result.rates_fitted ? "o, " : "") << "p, "
-      << (result.amplitudes_fitted ? "s, " : "") << (result.rates_fitted ? "t, " : "") << "u, n\n";
+      << (result.amplitudes_fitted ? "s, " : "") << (result.rates_fitted ? "t, " : "") << "u"
+      << (result.exponent_fitted ? ", n" : "") << "\n";
   for (const auto& warning : result.warnings) out << "# warning: " << warning << "\n";
   out << "[model]\n";
   out << "hertz = \"" << (result.hertz == HertzMode::exact ? "exact" : "hale") << "\"\n";

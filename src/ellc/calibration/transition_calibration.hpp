@@ -6,11 +6,13 @@
 //     Eq. (28) is fitted to it for (λ_max, ε_max, n). Each residual is weighted by
 //     π Y (c_c² − c_Y²) / F, so that w (λ_model − λ_FEM) = (F_model − F) / F: the λ fit the paper
 //     did, with points counted by their relative force error (λ_FEM is ill-conditioned near δ_Y).
-//  2. One n shared by all cases (the paper's single n = 1.8): a joint fit of n with every case's
-//     λ_max, ε_max.
+//     A case whose data stops before the plateau (c_c < ε_max c_Y) cannot pin n: its λ_max, ε_max
+//     are fitted with n held at the prior's (the paper fixed n = 1.8).
+//  2. One n shared by all cases (the paper's single n): a joint fit of n with the λ_max, ε_max of
+//     every case that pins n; the prior's n when none does.
 //  3. Across cases, eq. (52): λ_max = m exp(o x) + p, ε_max = s exp(t x) + u, x = R_e/r̂^{I,J}.
-//     Three or more distinct x fit all three constants; two fit m, p (s, u) with o (t) kept from
-//     the prior; one fits p (u) only.
+//     Four or more distinct x fit all three constants; two or three fit m, p (s, u) with o (t)
+//     kept from the prior; one fits p (u) only.
 // All least-squares problems are solved by Ceres (Levenberg–Marquardt, automatic derivatives).
 
 #include <span>
@@ -57,6 +59,7 @@ struct CaseCalibration {
   double yield_force = 0.0;       // F_pY
   std::vector<LambdaSample> profile;
   TransitionPoint own;     // step 1: λ_max, ε_max, n of this case alone
+  bool own_exponent_fitted = false;  // false: the data does not pin n (no plateau), own.n is the prior's
   TransitionPoint shared;  // step 2: with the n shared by all cases
   double own_rms = 0.0;     // RMS relative force error of step 1 over the profile points
   double shared_rms = 0.0;  // same for step 2
@@ -68,8 +71,9 @@ struct CalibrationResult {
   std::vector<CaseCalibration> cases;
   LawParameters law;  // the calibrated m, o, p, s, t, u, n and yield_pressure_factor
   HertzMode hertz = HertzMode::hale;
-  bool rates_fitted = false;       // o, t fitted (≥ 3 distinct R_e/r̂)
+  bool rates_fitted = false;       // o, t fitted (≥ 4 distinct R_e/r̂)
   bool amplitudes_fitted = false;  // m, s fitted (≥ 2 distinct R_e/r̂)
+  bool exponent_fitted = false;    // n fitted (some case reaches the plateau), else the prior's
   std::vector<std::string> warnings;
 };
 
