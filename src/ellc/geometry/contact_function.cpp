@@ -7,7 +7,7 @@
 namespace ellc {
 
 ContactFunctionResult perram_wertheim(const Ellipsoid& body_i, const Ellipsoid& body_j,
-                                      bool stop_when_separated) noexcept {
+                                      bool stop_when_separated, double lambda_tolerance) noexcept {
   ContactFunctionResult result;
   const Eigen::Vector3d r = body_j.center() - body_i.center();
   const double distance = r.norm();
@@ -53,7 +53,7 @@ ContactFunctionResult perram_wertheim(const Ellipsoid& body_i, const Ellipsoid& 
     else upper = lambda;
     double next = curvature < 0.0 ? lambda - slope / curvature : 0.5 * (lower + upper);
     if (!(next > lower && next < upper)) next = 0.5 * (lower + upper);  // Newton left the bracket: bisect
-    const bool done = std::abs(next - lambda) <= 1e-12 || upper - lower <= 1e-12;
+    const bool done = std::abs(next - lambda) <= lambda_tolerance || upper - lower <= lambda_tolerance;
     lambda = next;
     if (done) {
       result.separated = result.value > 1.0;

@@ -26,12 +26,14 @@ struct ContactFunctionResult {
   Eigen::Vector3d normal = Eigen::Vector3d::UnitX();  // unit C(λ)⁻¹ r, from I towards J
   int iterations = 0;
   bool separated = false;  // F(λ) > 1 was seen: `normal` is a separating axis
-  bool converged = false;  // λ* found to 1e-12 (or separation proven)
+  bool converged = false;  // λ* found to the tolerance (or separation proven)
 };
 
 // `stop_when_separated`: return as soon as F(λ) > 1 (the narrow phase only needs the certificate).
-// Concentric bodies (r = 0) return value 0, converged = false.
+// `lambda_tolerance`: bracket width / Newton step in λ at which to stop (the narrow phase only
+// needs a starting normal and uses 1e-6). Concentric bodies (r = 0) return value 0, converged = false.
 [[nodiscard]] ContactFunctionResult perram_wertheim(const Ellipsoid& body_i, const Ellipsoid& body_j,
-                                                    bool stop_when_separated = true) noexcept;
+                                                    bool stop_when_separated = true,
+                                                    double lambda_tolerance = 1e-12) noexcept;
 
 }  // namespace ellc

@@ -39,13 +39,16 @@ struct PairData {
     const Eigen::Vector3d image_j = shape_j * unit_normal;
     value.reach_i = std::sqrt(unit_normal.dot(image_i));
     value.reach_j = std::sqrt(unit_normal.dot(image_j));
-    value.arm_i = image_i / value.reach_i;
-    value.arm_j = image_j / value.reach_j;
+    value.arm_i = image_i * (1.0 / value.reach_i);  // one division, not three
+    value.arm_j = image_j * (1.0 / value.reach_j);
     value.overlap = value.reach_i + value.reach_j - unit_normal.dot(offset);
     value.gradient = value.arm_i + value.arm_j - offset;
     return value;
   }
 };
+
+// v / |v| with one division (Eigen's normalized() divides each component).
+[[nodiscard]] inline Eigen::Vector3d unit(const Eigen::Vector3d& v) noexcept { return v * (1.0 / std::sqrt(v.dot(v))); }
 
 struct Solve {
   AlongNormal at;
@@ -72,9 +75,9 @@ Hessian2 reach_hessian(const Eigen::Matrix3d& shape, const Eigen::Vector3d& arm,
 }
 
 // Damped Newton on the unit sphere for a local minimum of g. Monotone in g.
-Solve common_normal(const PairData& pair, const Eigen::Vector3d& start) noexcept {
+Solve common_normal(const PairData& pair, const AlongNormal& start) noexcept {
   Solve solve;
-  solve.at = pair.along(start.normalized());
+  solve.at = start;
   const double scale = solve.at.reach_i + solve.at.reach_j;
   const double gradient_tolerance = kGradientTolerance * scale;
   while (true) {
@@ -104,9 +107,9 @@ Solve common_normal(const PairData& pair, const Eigen::Vector3d& start) noexcept
     const double shift = lowest > 1e-8 * size ? 0.0 : 1e-3 * size - lowest + 1e-300;
     const double d11 = h11 + shift;
     const double d22 = h22 + shift;
-    const double determinant = d11 * d22 - h12 * h12;
-    double s1 = -(d22 * g1 - h12 * g2) / determinant;
-    double s2 = -(d11 * g2 - h12 * g1) / determinant;
+    const double inverse_determinant = 1.0 / (d11 * d22 - h12 * h12);
+    double s1 = -(d22 * g1 - h12 * g2) * inverse_determinant;
+    double s2 = -(d11 * g2 - h12 * g1) * inverse_determinant;
     double length = std::sqrt(s1 * s1 + s2 * s2);
     if (!std::isfinite(length)) return solve;
     if (length > kMaxStep) {
@@ -115,7 +118,7 @@ Solve common_normal(const PairData& pair, const Eigen::Vector3d& start) noexcept
       length = kMaxStep;
     }
     if (length < kFullStep && shift == 0.0) {  // quadratic convergence region: no line search
-      solve.at = pair.along((at.normal + s1 * frame.t1 + s2 * frame.t2).normalized());
+      solve.at = pair.along(unit(at.normal + s1 * frame.t1 + s2 * frame.t2));
       if (length <= kFinalStep) {  // the error left is O(length²): at the rounding floor
         solve.converged = true;
         return solve;
@@ -124,7 +127,7 @@ Solve common_normal(const PairData& pair, const Eigen::Vector3d& start) noexcept
     }
     bool accepted = false;
     for (int halving = 0; halving < 40 && !accepted; ++halving) {
-      const AlongNormal trial = pair.along((at.normal + s1 * frame.t1 + s2 * frame.t2).normalized());
+      const AlongNormal trial = pair.along(unit(at.normal + s1 * frame.t1 + s2 * frame.t2));
       if (trial.overlap <= at.overlap + 1e-15 * scale) {
         solve.at = trial;
         accepted = true;
@@ -145,12 +148,16 @@ void fill_support_geometry(const Ellipsoid& body_i, const Ellipsoid& body_j, con
   geometry.point = 0.5 * (geometry.surface_point_i + geometry.surface_point_j);
 }
 
-NarrowPhaseResult separated(const Ellipsoid& body_i, const Ellipsoid& body_j, const AlongNormal& at) noexcept {
-  NarrowPhaseResult result;
+void store_warm_start(const Eigen::Vector3d& normal, NarrowPhaseWarmStart& warm) noexcept {
+  warm.normal = {normal.x(), normal.y(), normal.z()};
+  warm.valid = true;
+}
+
+void mark_separated(const Ellipsoid& body_i, const Ellipsoid& body_j, const AlongNormal& at,
+                    NarrowPhaseResult& result) noexcept {
   result.status = NarrowPhaseStatus::separated;
   fill_support_geometry(body_i, body_j, at, result.geometry);
-  result.warm_start = {{at.normal.x(), at.normal.y(), at.normal.z()}, true};
-  return result;
+  store_warm_start(at.normal, result.warm_start);
 }
 
 // A converged common normal that is physical: n points from I to J (else the overlap exceeds
@@ -160,9 +167,13 @@ bool physical(const Solve& solve, const Eigen::Vector3d& offset) noexcept {
          solve.at.arm_i.allFinite() && solve.at.arm_j.allFinite();
 }
 
-NarrowPhaseResult finish(const Ellipsoid& body_i, const Ellipsoid& body_j, const AlongNormal& at) noexcept {
-  if (!(at.overlap > 0.0)) return separated(body_i, body_j, at);
-  NarrowPhaseResult result;
+// The solved common normal: contact (with curvatures and α) or, for g ≤ 0, separated.
+void mark_solved(const Ellipsoid& body_i, const Ellipsoid& body_j, const AlongNormal& at,
+                 NarrowPhaseResult& result) noexcept {
+  if (!(at.overlap > 0.0)) {
+    mark_separated(body_i, body_j, at, result);
+    return;
+  }
   result.status = NarrowPhaseStatus::contact;
   ContactGeometry& geometry = result.geometry;
   fill_support_geometry(body_i, body_j, at, geometry);
@@ -171,36 +182,38 @@ NarrowPhaseResult finish(const Ellipsoid& body_i, const Ellipsoid& body_j, const
   geometry.curvature_i = body_i.curvature_in_frame(at.normal, frame, at.reach_i);
   geometry.curvature_j = body_j.curvature_in_frame(-at.normal, frame, at.reach_j);
   geometry.alpha = pair_principal_directions(geometry.curvature_i, geometry.curvature_j, at.normal);
-  result.warm_start = {{at.normal.x(), at.normal.y(), at.normal.z()}, true};
-  return result;
+  store_warm_start(at.normal, result.warm_start);
 }
 
 }  // namespace
 
 NarrowPhaseResult ellipsoid_contact(const Ellipsoid& body_i, const Ellipsoid& body_j,
                                     const NarrowPhaseWarmStart* warm) noexcept {
-  NarrowPhaseResult failure;
-  if (!body_i.valid() || !body_j.valid()) return failure;
+  NarrowPhaseResult result;  // status failed until proven otherwise
+  if (!body_i.valid() || !body_j.valid()) return result;
   const PairData pair{body_i.inverse_shape(), body_j.inverse_shape(), body_j.center() - body_i.center()};
   const double distance = pair.offset.norm();
-  const Eigen::Vector3d centre_line = distance > 0.0 ? Eigen::Vector3d(pair.offset / distance) : body_i.rotation().col(0);
-  failure.geometry.normal = centre_line;
+  auto centre_line = [&]() -> Eigen::Vector3d {
+    return distance > 0.0 ? Eigen::Vector3d(pair.offset * (1.0 / distance)) : body_i.rotation().col(0);
+  };
+  if (distance > body_i.bounding_radius() + body_j.bounding_radius()) {  // bounding spheres apart
+    mark_separated(body_i, body_j, pair.along(centre_line()), result);
+    return result;
+  }
 
-  if (distance > body_i.bounding_radius() + body_j.bounding_radius())  // bounding spheres apart
-    return separated(body_i, body_j, pair.along(centre_line));
-
-  int steps = 0;
   if (warm != nullptr && warm->valid) {
     const Eigen::Vector3d start(warm->normal[0], warm->normal[1], warm->normal[2]);
     const double start_norm = start.norm();
     if (std::isfinite(start_norm) && start_norm > 0.0) {
-      const AlongNormal at_start = pair.along(start / start_norm);
-      if (at_start.overlap < 0.0) return separated(body_i, body_j, at_start);  // still a separating axis
-      const Solve solve = common_normal(pair, at_start.normal);
-      steps += solve.steps;
+      const AlongNormal at_start = pair.along(start * (1.0 / start_norm));
+      if (at_start.overlap < 0.0) {  // still a separating axis
+        mark_separated(body_i, body_j, at_start, result);
+        return result;
+      }
+      const Solve solve = common_normal(pair, at_start);
+      result.iterations += solve.steps;
       if (physical(solve, pair.offset)) {
-        NarrowPhaseResult result = finish(body_i, body_j, solve.at);
-        result.iterations = steps;
+        mark_solved(body_i, body_j, solve.at, result);
         return result;
       }
     }
@@ -208,16 +221,13 @@ NarrowPhaseResult ellipsoid_contact(const Ellipsoid& body_i, const Ellipsoid& bo
 
   // Cold start (or fallback): the Perram–Wertheim contact normal; concentric bodies use I's
   // thinnest axis.
-  int contact_function_iterations = 0;
-  Eigen::Vector3d start = centre_line;
+  result.cold_start = true;
+  Eigen::Vector3d start = centre_line();
   if (distance > 0.0) {
-    const ContactFunctionResult contact_function = perram_wertheim(body_i, body_j);
-    contact_function_iterations = contact_function.iterations;
+    const ContactFunctionResult contact_function = perram_wertheim(body_i, body_j, true, 1e-6);
+    result.contact_function_iterations = contact_function.iterations;
     if (contact_function.separated) {
-      NarrowPhaseResult result = separated(body_i, body_j, pair.along(contact_function.normal));
-      result.contact_function_iterations = contact_function_iterations;
-      result.cold_start = true;
-      result.iterations = steps;
+      mark_separated(body_i, body_j, pair.along(contact_function.normal), result);
       return result;
     }
     start = contact_function.normal;
@@ -226,16 +236,17 @@ NarrowPhaseResult ellipsoid_contact(const Ellipsoid& body_i, const Ellipsoid& bo
     body_i.semi_axes().minCoeff(&thinnest);
     start = body_i.rotation().col(thinnest);
   }
-  Solve solve = common_normal(pair, start);
-  steps += solve.steps;
+  Solve solve = common_normal(pair, pair.along(unit(start)));
+  result.iterations += solve.steps;
   if (!physical(solve, pair.offset) && distance > 0.0) {  // last resort: from the line of centres
-    solve = common_normal(pair, centre_line);
-    steps += solve.steps;
+    solve = common_normal(pair, pair.along(centre_line()));
+    result.iterations += solve.steps;
   }
-  NarrowPhaseResult result = physical(solve, pair.offset) ? finish(body_i, body_j, solve.at) : failure;
-  result.iterations = steps;
-  result.contact_function_iterations = contact_function_iterations;
-  result.cold_start = true;
+  if (physical(solve, pair.offset)) {
+    mark_solved(body_i, body_j, solve.at, result);
+  } else {
+    result.geometry.normal = centre_line();  // failed: zeroed geometry, normal = line of centres
+  }
   return result;
 }
 
