@@ -34,8 +34,9 @@ PYBIND11_MODULE(_ellc, module) {
     }
   });
   ellc::python::bind_material_and_hertz(module);
-  ellc::python::bind_geometry(module);
+  // Order matters: default arguments (e.g. law=LawParameters()) need their types registered first.
   ellc::python::bind_law(module);
   ellc::python::bind_cases(module);
+  ellc::python::bind_geometry(module);
   ellc::python::bind_calibration(module);
 }
