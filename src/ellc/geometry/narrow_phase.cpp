@@ -56,22 +56,27 @@ struct Solve {
   bool converged = false;
 };
 
-// Tangential Hessian of ρ(n) for one body: (tₐᵀ S t_b − (tₐ·a)(t_b·a)) / ρ, a = S n / ρ.
+// Tangential Hessian of ρ_I + ρ_J at n: Σ_k (tₐᵀ S_k t_b − (tₐ·a_k)(t_b·a_k)) / ρ_k with
+// a_k = S_k n / ρ_k. The two S_k/ρ_k are summed first, so one pair of products serves both bodies.
 struct Hessian2 {
-  double h11 = 0.0;
-  double h12 = 0.0;
-  double h22 = 0.0;
+  double h11;
+  double h12;
+  double h22;
 };
 
-Hessian2 reach_hessian(const Eigen::Matrix3d& shape, const Eigen::Vector3d& arm, double reach,
-                       const geometry_detail::TangentFrame& frame) noexcept {
-  const Eigen::Vector3d shape_t1 = shape * frame.t1;
-  const Eigen::Vector3d shape_t2 = shape * frame.t2;
-  const double a1 = frame.t1.dot(arm);
-  const double a2 = frame.t2.dot(arm);
-  const double inverse = 1.0 / reach;
-  return {(frame.t1.dot(shape_t1) - a1 * a1) * inverse, (frame.t2.dot(shape_t1) - a1 * a2) * inverse,
-          (frame.t2.dot(shape_t2) - a2 * a2) * inverse};
+Hessian2 reach_hessian(const PairData& pair, const AlongNormal& at, const geometry_detail::TangentFrame& frame) noexcept {
+  const double inverse_i = 1.0 / at.reach_i;
+  const double inverse_j = 1.0 / at.reach_j;
+  const Eigen::Matrix3d combined = pair.shape_i * inverse_i + pair.shape_j * inverse_j;
+  const Eigen::Vector3d combined_t1 = combined * frame.t1;
+  const Eigen::Vector3d combined_t2 = combined * frame.t2;
+  const double ai1 = frame.t1.dot(at.arm_i);
+  const double ai2 = frame.t2.dot(at.arm_i);
+  const double aj1 = frame.t1.dot(at.arm_j);
+  const double aj2 = frame.t2.dot(at.arm_j);
+  return {frame.t1.dot(combined_t1) - ai1 * ai1 * inverse_i - aj1 * aj1 * inverse_j,
+          frame.t2.dot(combined_t1) - ai1 * ai2 * inverse_i - aj1 * aj2 * inverse_j,
+          frame.t2.dot(combined_t2) - ai2 * ai2 * inverse_i - aj2 * aj2 * inverse_j};
 }
 
 // Damped Newton on the unit sphere for a local minimum of g. Monotone in g.
@@ -95,11 +100,10 @@ Solve common_normal(const PairData& pair, const AlongNormal& start) noexcept {
     ++solve.steps;
 
     // Riemannian Hessian on the sphere: ∇²ρ_I + ∇²ρ_J (tangential) − g I.
-    const Hessian2 hi = reach_hessian(pair.shape_i, at.arm_i, at.reach_i, frame);
-    const Hessian2 hj = reach_hessian(pair.shape_j, at.arm_j, at.reach_j, frame);
-    const double h11 = hi.h11 + hj.h11 - at.overlap;
-    const double h12 = hi.h12 + hj.h12;
-    const double h22 = hi.h22 + hj.h22 - at.overlap;
+    const Hessian2 reach = reach_hessian(pair, at, frame);
+    const double h11 = reach.h11 - at.overlap;
+    const double h12 = reach.h12;
+    const double h22 = reach.h22 - at.overlap;
     // Levenberg shift where the Hessian is not safely positive definite.
     const double size = std::abs(h11) + std::abs(h22) + std::abs(h12);
     const double half_split = 0.5 * (h11 - h22);
