@@ -22,10 +22,10 @@ struct Plane {
 // or an invalid body, gives status failed.
 [[nodiscard]] NarrowPhaseResult wall_contact(const Ellipsoid& body, const Plane& wall) noexcept;
 
-// r̂^{I,J} (paper eq. 50) for a wall contact: the wall is treated as the mirror image of the
-// particle in the plane, the symmetric two-body problem whose mid-plane is the wall, so
-// r̂^{I,J} = 2 r̂ of the particle. The law's transition fits (eq. 52–53) then see the same R_e/r̂
-// as for two identical particles touching at the same point.
+// r̂^{I,J} (paper eq. 50) for a wall contact, by convention 2 r̂ of the particle: a flat wall
+// has no finite r̂, so it is given that of the particle's mirror image in the plane. This keeps
+// R_e/r̂^{I,J} finite (a sphere on a wall: 1/2; two equal spheres: 1/4). The transition fits
+// were calibrated on particle pairs only; docs/geometry.md §4.
 [[nodiscard]] double wall_mean_radius_sum(const Ellipsoid& body) noexcept;
 
 }  // namespace ellc
