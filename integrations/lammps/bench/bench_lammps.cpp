@@ -61,17 +61,25 @@ void report(benchmark::State& state, double contacts_per_particle) {
   state.counters["contacts_per_particle"] = contacts_per_particle;
 }
 
-void EllipsoidBK(benchmark::State& state) {
-  const Session session;
-  auto commands = lattice("ellipsoid");
-  commands.insert(commands.end(),
-                  {"set type 1 shape 12 10 8.4", "set type 1 quat/random 4711", "set type 1 density 4.7",
-                   "pair_style ellipsoid/bk",
-                   "pair_coeff 1 1 1.42e8 0.25 7.9e6 friction 0.3 damping 0.1 tangential_damping 0.1",
-                   "fix integrate all nve/asphere", "run 200"});
+// Builds the packing with `setup`, settles it for 200 steps, then times kStepsPerIteration steps
+// per benchmark iteration.
+void time_steps(benchmark::State& state, const Session& session, const std::string& atom_style,
+                const std::vector<std::string>& setup) {
+  auto commands = lattice(atom_style);
+  commands.insert(commands.end(), setup.begin(), setup.end());
+  commands.emplace_back("run 200");
   session.run(commands);
   const std::string step = "run " + std::to_string(kStepsPerIteration) + " pre no post no";
   for (auto _ : state) session.run({step});
+}
+
+void EllipsoidBK(benchmark::State& state) {
+  const Session session;
+  time_steps(state, session, "ellipsoid",
+             {"set type 1 shape 12 10 8.4", "set type 1 quat/random 4711", "set type 1 density 4.7",
+              "pair_style ellipsoid/bk",
+              "pair_coeff 1 1 1.42e8 0.25 7.9e6 friction 0.3 damping 0.1 tangential_damping 0.1",
+              "fix integrate all nve/asphere"});
   auto* modify = session.lmp->modify;
   auto* history = dynamic_cast<ellc_lammps::FixContactHistory*>(
       modify->fix[modify->find_fix(ellc_lammps::PairEllipsoidBK::kHistoryFixId)]);
@@ -80,16 +88,11 @@ void EllipsoidBK(benchmark::State& state) {
 
 void GranularHertzMaterial(benchmark::State& state) {
   const Session session;
-  auto commands = lattice("sphere");
-  commands.insert(commands.end(),
-                  {"set type 1 diameter 10.0266", "set type 1 density 4.7", "comm_modify vel yes",
-                   "pair_style granular",
-                   "pair_coeff * * hertz/material 1.42e8 0.1 0.25 tangential mindlin NULL 1.0 0.3",
-                   "fix integrate all nve/sphere", "compute touching all contact/atom",
-                   "compute contacts all reduce sum c_touching", "thermo_style custom step c_contacts", "run 200"});
-  session.run(commands);
-  const std::string step = "run " + std::to_string(kStepsPerIteration) + " pre no post no";
-  for (auto _ : state) session.run({step});
+  time_steps(state, session, "sphere",
+             {"set type 1 diameter 10.0266", "set type 1 density 4.7", "comm_modify vel yes", "pair_style granular",
+              "pair_coeff * * hertz/material 1.42e8 0.1 0.25 tangential mindlin NULL 1.0 0.3",
+              "fix integrate all nve/sphere", "compute touching all contact/atom",
+              "compute contacts all reduce sum c_touching", "thermo_style custom step c_contacts"});
   session.run({"run 0"});
   auto* modify = session.lmp->modify;
   const double contacts = modify->compute[modify->find_compute("contacts")]->compute_scalar();
