@@ -12,6 +12,7 @@ from .plotting import figure, save
 from .tables import markdown_table, pct
 
 N_SCAN = np.round(np.arange(1.0, 4.01, 0.1), 2)
+HERTZ_CONSISTENT = 0.05  # |F_FE / F_Hertz - 1| below delta_Y for a case to count as Hertz-consistent
 CALIBRATION_MESH = "medium"
 
 
@@ -26,8 +27,10 @@ def per_case_fits() -> list[dict]:
         contact = run.contact()
         free = fit_case(contact, run.overlap, run.force)
         fixed = fit_case(contact, run.overlap, run.force, n_fixed=PAPER["n"])
+        pre = run.overlap <= contact.delta_y
+        dev = float(np.median(run.force[pre] / contact.hertz(run.overlap[pre]) - 1.0)) if pre.any() else 0.0
         rows.append({"run": run, "contact": contact, "x": contact.r_e / contact.r_hat,
-                     "free": free, "fixed": fixed,
+                     "free": free, "fixed": fixed, "pre_yield": dev,
                      "max_over_yield": float(run.overlap.max() / contact.delta_y)})
     return rows
 
@@ -39,12 +42,19 @@ def common_n(rows: list[dict]) -> tuple[float, list[float]]:
     return float(N_SCAN[int(np.argmin(totals))]), totals
 
 
-def constants_fit(rows: list[dict], key: str = "fixed") -> dict:
+def hertz_consistent(rows: list[dict]) -> list[dict]:
+    return [r for r in rows if abs(r["pre_yield"]) < HERTZ_CONSISTENT]
+
+
+def constants_fit(rows: list[dict], key: str = "fixed", paper_rates: bool = False) -> dict:
+    """m, o, p, s, t, u by eq. (52); paper_rates keeps o, t at the paper's values."""
     x = np.array([r["x"] for r in rows])
     lam = np.array([r[key].lam_max for r in rows])
     eps = np.array([r[key].eps_max for r in rows])
-    m, o, p, lam_rms = fit_exponential(x, lam)
-    s, t, u, eps_rms = fit_exponential(x, eps)
+    o_range = (PAPER["o"], PAPER["o"]) if paper_rates else (-15.0, 0.0)
+    t_range = (PAPER["t"], PAPER["t"]) if paper_rates else (-15.0, 0.0)
+    m, o, p, lam_rms = fit_exponential(x, lam, o_range)
+    s, t, u, eps_rms = fit_exponential(x, eps, t_range)
     n = PAPER["n"] if key == "fixed" else float(np.median([r[key].n for r in rows]))
     return {"m": m, "o": o, "p": p, "s": s, "t": t, "u": u, "n": n, "lam_rms": lam_rms, "eps_rms": eps_rms}
 
@@ -62,18 +72,20 @@ def force_effect(rows: list[dict], ours: dict) -> list[dict]:
     return out
 
 
-def plot_lambda_profiles(rows: list[dict], ours: dict) -> str:
+def plot_lambda_profiles(rows: list[dict]) -> str:
     fig, axes = figure(2, width=5.2)
     for r in rows:
         run, c = r["run"], r["contact"]
         lam = lambda_fem(c, *loading_points(run.overlap, run.force))
         d, _ = loading_points(run.overlap, run.force)
         ratio = np.sqrt(c.c2(d)) / c.c_y
-        line, = axes[0].plot(ratio, lam, "o", ms=3)
+        line, = axes[0].plot(ratio, lam, "o", ms=3, label=run.name)
         grid = np.linspace(c.delta_y, d.max(), 100)
         axes[0].plot(np.sqrt(c.c2(grid)) / c.c_y, c.lam(grid), "-", color=line.get_color(), lw=0.8)
     axes[0].set(xlabel="c_c / c_Y", ylabel="λ", ylim=(1.4, 3.6),
-                title="λ_FEM (eq. 51, points) vs eq. 28 with the paper's constants (lines)")
+                title="FE via eq. 51 (points), eq. 28 with paper constants (lines)")
+    axes[0].title.set_fontsize(9)
+    axes[0].legend(fontsize=6, ncol=2)
     for r in rows:
         if "g05" in r["run"].name:
             run, c = r["run"], r["contact"]

@@ -26,10 +26,19 @@ class Run:
     force: np.ndarray
     table: dict
 
+    @property
+    def case_file(self) -> str:
+        """The case TOML, relative to the repository (from the recorded command)."""
+        return case_file_of(self.record)
+
     def contact(self, exact: bool = False, constants: dict | None = None) -> Contact:
         m, semi = self.case.material, (lambda b: (b.a, b.b, b.c))
         return make_contact(semi(self.case.body_i), semi(self.case.body_j), m.youngs_modulus,
                             m.poisson_ratio, m.yield_stress, exact=exact, constants=constants)
+
+
+def case_file_of(record: dict) -> str:
+    return shlex.split(record["command"])[1]
 
 
 def load_run(name: str, data_dir: str = DATA) -> Run | None:
@@ -38,8 +47,7 @@ def load_run(name: str, data_dir: str = DATA) -> Run | None:
     csv = os.path.join(data_dir, f"{name}.csv")
     if record is None or record.get("status") != "complete" or not os.path.exists(csv):
         return None
-    case_file = shlex.split(record["command"])[1]
-    case = replace(load_case(os.path.join(REPO, case_file)), name=name,
+    case = replace(load_case(os.path.join(REPO, case_file_of(record))), name=name,
                    points_per_segment=record["points_per_segment"])
     table = read_csv(csv)
     return Run(name, case, record, table["overlap"], table["force"], table)

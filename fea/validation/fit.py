@@ -76,11 +76,13 @@ def fit_case(contact: Contact, overlap, force, n_fixed: float | None = None) -> 
     return CaseFit(lam_max, eps, n, rms, plateau=c_last >= eps * contact.c_y)
 
 
-def fit_exponential(x, y, o_range=(-30.0, 0.0)) -> tuple[float, float, float, float]:
-    """(m, o, p, rms) of y = m exp(o x) + p (eq. 52)."""
+def fit_exponential(x, y, o_range=(-15.0, 0.0)) -> tuple[float, float, float, float]:
+    """(m, o, p, rms) of y = m exp(o x) + p (eq. 52); o is scanned over o_range (a single
+    value fixes the decay rate and leaves m, p as a linear least-squares problem)."""
     x, y = np.asarray(x, float), np.asarray(y, float)
     best = None
-    for o in np.linspace(*o_range, 3001):
+    lo, hi = o_range
+    for o in np.linspace(lo, hi, 3001 if hi > lo else 1):
         basis = np.column_stack([np.exp(o * x), np.ones_like(x)])
         (m, p), *_ = np.linalg.lstsq(basis, y, rcond=None)
         rms = float(np.sqrt(np.mean((basis @ [m, p] - y) ** 2)))

@@ -12,6 +12,7 @@ import sys
 
 from . import calibration_report as cal
 from .elastic_report import elastic_errors, elastic_table, plot_elastic
+from .ellc_fit import ellc_fit
 from .law_oracle import PAPER
 from .plotting import REPO
 from .tables import markdown_table, pct
@@ -29,22 +30,22 @@ def _replace(text: str, key: str, lines: list[str]) -> str:
     return pattern.sub(lambda m: m.group(1) + "\n".join(lines) + "\n" + m.group(2), text)
 
 
-def _constants_table(ours: dict, free: dict, n_best: float) -> list[str]:
+def _constants_table(fits: dict[str, dict], n_best: float) -> list[str]:
     keys = ("m", "o", "p", "s", "t", "u")
-    return ["| constants | " + " | ".join(keys) + " | n |", "| --- |" + " ---: |" * 7,
-            "| paper (eq. 53) | " + " | ".join(f"{PAPER[k]:.2f}" for k in keys) + f" | {PAPER['n']:.1f} |",
-            "| ours, n fixed at 1.8 (interim) | " + " | ".join(f"{ours[k]:.2f}" for k in keys) + " | 1.8 |",
-            "| ours, n free per case (interim) | " + " | ".join(f"{free[k]:.2f}" for k in keys)
-            + f" | median {free['n']:.2f} |",
-            f"| best common n (summed rms force error) | | | | | | | {n_best:.1f} |"]
+    body = [["paper (eq. 53)", *(f"{PAPER[k]:.2f}" for k in keys), f"{PAPER['n']:.1f}", "–", "–"]]
+    body += [[label, *(f"{f[k]:.2f}" for k in keys), f"{f['n']:.2f}", f"{f['lam_rms']:.3f}", f"{f['eps_rms']:.2f}"]
+             for label, f in fits.items()]
+    body.append(["best common n (summed rms force error)", *[""] * 6, f"{n_best:.1f}", "", ""])
+    return markdown_table(["constants", *keys, "n", "rms λ_max", "rms ε_max"], "lrrrrrrrrr", body)
 
 
 def _case_table(rows: list[dict]) -> list[str]:
-    body = [[r["run"].name, f"{r['x']:.3f}", f"{r['max_over_yield']:.1f}", f"{r['fixed'].lam_max:.2f}",
+    body = [[r["run"].name, f"{r['x']:.3f}", pct(r["pre_yield"], 1, sign=True), f"{r['max_over_yield']:.1f}",
+             f"{r['fixed'].lam_max:.2f}",
              f"{r['fixed'].eps_max:.2f}", "yes" if r["fixed"].plateau else "no", pct(r["fixed"].rms),
              f"{r['free'].lam_max:.2f}, {r['free'].eps_max:.2f}, {r['free'].n:.2f}"] for r in rows]
-    return markdown_table(["case", "R_e/r̂", "δ_end/δ_Y", "λ_max", "ε_max", "plateau", "rms force error",
-                           "n free: λ_max, ε_max, n"], "lrrrrlrl", body)
+    return markdown_table(["case", "R_e/r̂", "F_FE/F_Hertz − 1 below δ_Y", "δ_end/δ_Y", "λ_max", "ε_max",
+                           "plateau", "rms force error", "n free: λ_max, ε_max, n"], "lrrrrrlrl", body)
 
 
 def _effect_table(effect: list[dict]) -> list[str]:
@@ -68,15 +69,23 @@ def main() -> int:
     rows = cal.per_case_fits()
     if len(rows) >= 4:
         ours = cal.constants_fit(rows, "fixed")
-        free = cal.constants_fit(rows, "free")
+        good = cal.hertz_consistent(rows)
+        fits = {f"ours, all {len(rows)} cases, n = 1.8 (interim)": ours,
+                f"ours, {len(good)} Hertz-consistent cases, n = 1.8 (interim)": cal.constants_fit(good, "fixed"),
+                f"ours, all cases, n = 1.8, o and t kept at the paper's (interim)":
+                    cal.constants_fit(rows, "fixed", paper_rates=True),}
+        cxx = ellc_fit([r["run"] for r in rows])
+        if cxx:
+            fits[f"`ellc fit` (C++), all {len(rows)} cases, its own n"] = {**cxx, "lam_rms": float("nan"),
+                                                                              "eps_rms": float("nan")}
         n_best, _ = cal.common_n(rows)
         effect = cal.force_effect(rows, ours)
-        cal.plot_lambda_profiles(rows, ours)
+        cal.plot_lambda_profiles(rows)
         cal.plot_constants(rows, ours)
-        text = _replace(text, "constants", _constants_table(ours, free, n_best))
+        text = _replace(text, "constants", _constants_table(fits, n_best))
         text = _replace(text, "cases", _case_table(rows))
         text = _replace(text, "effect", _effect_table(effect))
-        summary["constants_n_fixed"], summary["constants_n_free"] = ours, free
+        summary["constants"] = fits
         summary["common_n"] = n_best
         summary["force_effect"] = effect
     results = protocol_results()
