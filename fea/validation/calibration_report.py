@@ -27,8 +27,7 @@ def per_case_fits() -> list[dict]:
         contact = run.contact()
         free = fit_case(contact, run.overlap, run.force)
         fixed = fit_case(contact, run.overlap, run.force, n_fixed=PAPER["n"])
-        pre = run.overlap <= contact.delta_y
-        dev = float(np.median(run.force[pre] / contact.hertz(run.overlap[pre]) - 1.0)) if pre.any() else 0.0
+        dev = pre_yield_deviation(run, contact)
         rows.append({"run": run, "contact": contact, "x": contact.r_e / contact.r_hat,
                      "free": free, "fixed": fixed, "pre_yield": dev,
                      "max_over_yield": float(run.overlap.max() / contact.delta_y)})
@@ -40,6 +39,12 @@ def common_n(rows: list[dict]) -> tuple[float, list[float]]:
     totals = [sum(fit_case(r["contact"], r["run"].overlap, r["run"].force, n_fixed=n).rms for r in rows)
               for n in N_SCAN]
     return float(N_SCAN[int(np.argmin(totals))]), totals
+
+
+def pre_yield_deviation(run, contact) -> float:
+    """Median of F_FE / F_Hertz - 1 over the increments at or below delta_Y (0 if none)."""
+    pre = run.overlap <= contact.delta_y
+    return float(np.median(run.force[pre] / contact.hertz(run.overlap[pre]) - 1.0)) if pre.any() else 0.0
 
 
 def hertz_consistent(rows: list[dict]) -> list[dict]:
