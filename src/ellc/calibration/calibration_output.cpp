@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <fstream>
+#include <limits>
 #include <stdexcept>
 
 namespace ellc {
@@ -55,12 +56,18 @@ std::vector<std::string> write_calibration_tables(const CalibrationResult& resul
   {
     std::ofstream file = open_table(prefix + "_radius.csv", written);
     file << "radius_ratio,lambda_max_fit,epsilon_max_fit,lambda_max_prior,epsilon_max_prior\n";
+    // The cases' range of R_e/r̂ and a margin on both sides: eq. (52) is an extrapolation beyond.
     double largest = 0.0;
-    for (const auto& entry : result.cases) largest = std::max(largest, entry.radius_ratio);
-    const double end = std::max(0.5, 1.2 * largest);
+    double smallest = std::numeric_limits<double>::infinity();
+    for (const auto& entry : result.cases) {
+      largest = std::max(largest, entry.radius_ratio);
+      smallest = std::min(smallest, entry.radius_ratio);
+    }
+    const double start = 0.5 * smallest;
+    const double end = 1.25 * largest;
     constexpr int kSteps = 200;
     for (int step = 0; step <= kSteps; ++step) {
-      const double x = end * step / kSteps;
+      const double x = start + (end - start) * step / kSteps;
       file << x << ',' << result.law.fit.lambda_max(x) << ',' << result.law.fit.epsilon_max(x) << ','
            << prior.fit.lambda_max(x) << ',' << prior.fit.epsilon_max(x) << '\n';
     }

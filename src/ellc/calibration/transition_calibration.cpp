@@ -28,7 +28,9 @@ constexpr double kEpsilonMaxLower = 1.0 + 1e-3;
 constexpr double kEpsilonMaxUpper = 100.0;
 constexpr double kExponentLower = 0.05;
 constexpr double kExponentUpper = 20.0;
-constexpr double kRateBound = 60.0;
+constexpr double kRateBound = 25.0;
+// Profile points need c_c² ≥ 1.02 c_Y² (δ ≥ 1.02 δ_Y).
+constexpr double kYieldMargin = 1.02;
 // Eq. (52) has three constants; with three points it would interpolate them exactly, which
 // extrapolates wildly. The rate is fitted from four distinct R_e/r̂ on.
 constexpr std::size_t kDistinctForRate = 4;
@@ -236,8 +238,9 @@ std::vector<LambdaSample> lambda_profile(const ContactConstants& c, std::span<co
     const double overlap = overlaps[index];
     if (overlap < largest_overlap) continue;  // unloading or reloading below δ_*: not the envelope
     largest_overlap = overlap;
-    if (overlap <= c.yield_overlap || !(forces[index] > 0.0)) continue;
     const double contact_radius_sq = c.contact_radius_sq_per_overlap * overlap;  // eq. (9)
+    // Eq. (51) divides by c_c² − c_Y²: points this close to the yield point say nothing about λ.
+    if (contact_radius_sq <= kYieldMargin * yield_radius_sq || !(forces[index] > 0.0)) continue;
     const double plastic_scale = kPi * c.yield_stress * (contact_radius_sq - yield_radius_sq);
     samples.push_back({overlap, forces[index], std::sqrt(contact_radius_sq) / c.yield_contact_radius,
                        (forces[index] - c.yield_force) / plastic_scale,  // eq. (51)
@@ -316,8 +319,8 @@ CalibrationResult calibrate(const std::vector<CalibrationCase>& cases, const Cal
     where.precision(4);
     if (entry.profile.empty()) {
       where << "the data never leaves the elastic regime: its largest overlap " << largest_overlap
-            << " µm does not exceed the elastic limit delta_Y = " << constants.yield_overlap
-            << " µm (p0 = " << yield_factor << " Y, F_pY = " << constants.yield_force
+            << " µm does not exceed the elastic limit delta_Y = " << constants.yield_overlap << " µm by 2 %"
+            << " (p0 = " << yield_factor << " Y, F_pY = " << constants.yield_force
             << " µN), so lambda_max, epsilon_max and n cannot be fitted; load well beyond delta_Y "
                "(the paper went to 15 % of r^I + r^J)";
       throw InputError(data.name, where.str());
@@ -352,6 +355,16 @@ CalibrationResult calibrate(const std::vector<CalibrationCase>& cases, const Cal
             << ", epsilon_max = " << entry.own.epsilon_max
             << "): the data looks elastic or stops long before the fully plastic regime";
       throw InputError(data.name, where.str());
+    }
+    if (entry.own.epsilon_max <= kEpsilonMaxLower * (1 + 1e-6)) {
+      const LambdaSample& first = entry.profile.front();
+      std::ostringstream warning;
+      warning.precision(3);
+      warning << data.name << ": eq. (28) finds no transition (epsilon_max at its bound 1): lambda_FEM does not rise "
+              << "from " << yield_factor << "; near delta_Y the force is "
+              << 100.0 * (first.force / (constants.hertz_coefficient * first.overlap * std::sqrt(first.overlap)) - 1.0)
+              << " % off Hertz (check the FE mesh, the Hertz mode, or whether the geometry suits the law)";
+      result.warnings.push_back(warning.str());
     }
     result.cases.push_back(std::move(entry));
   }
@@ -398,7 +411,7 @@ CalibrationResult calibrate(const std::vector<CalibrationCase>& cases, const Cal
     result.warnings.push_back(std::string("fewer than 4 distinct R_e/r^ among the cases: o and t kept from the prior") +
                               (result.amplitudes_fitted ? "" : ", and m and s too"));
   if (std::abs(fit.lambda_rate) >= kRateBound * (1 - 1e-6) || std::abs(fit.epsilon_rate) >= kRateBound * (1 - 1e-6))
-    result.warnings.push_back("an eq. (52) rate ran to its bound +-60: the cases span too little R_e/r^ to fix it");
+    result.warnings.push_back("an eq. (52) rate ran to its bound +-25: lambda_max or epsilon_max of the cases do not follow one exponential in R_e/r^ (see PREFIX_radius.png)");
 
   // The calibrated law as `ellc curve` evaluates it, against each case's loading data.
   for (std::size_t index = 0; index < cases.size(); ++index) {

@@ -77,7 +77,8 @@ struct CalibrationResult {
   std::vector<std::string> warnings;
 };
 
-// Step 1 input: eq. (51) on the virgin-loading points (δ at or above every earlier δ) beyond δ_Y.
+// Step 1 input: eq. (51) on the virgin-loading points (δ at or above every earlier δ) with
+// δ ≥ 1.02 δ_Y (closer to the yield point eq. 51 divides by almost zero and says nothing about λ).
 [[nodiscard]] std::vector<LambdaSample> lambda_profile(const ContactConstants& constants,
                                                        std::span<const double> overlaps,
                                                        std::span<const double> forces);
