@@ -119,7 +119,7 @@ void PairEllipsoidBK::init_style() {
 
 // Per-type cutoff radii, and the bad-input checks on shapes: point particles, calibrated range.
 void PairEllipsoidBK::check_shapes() {
-  gather_bodies();
+  gather_bodies(false);  // owned atoms only: ghost lists are rebuilt later, in the setup of the run
   const int ntypes = atom->ntypes;
   std::vector<double> radius(static_cast<std::size_t>(ntypes + 1), 0.0);
   tagint first_point = 0;
@@ -184,8 +184,8 @@ double PairEllipsoidBK::init_one(int i, int j) {
   return cut > 0.0 ? cut : 1.0;
 }
 
-// Shapes and quaternions of owned atoms from the compute, then to ghost atoms.
-void PairEllipsoidBK::gather_bodies() {
+// Shapes and quaternions of owned atoms from the compute, then (to_ghosts) to ghost atoms.
+void PairEllipsoidBK::gather_bodies(bool to_ghosts) {
   const int nmax = atom->nmax;
   if (bodies_.size() < static_cast<std::size_t>(nmax) * kBodyValues) {
     bodies_.resize(static_cast<std::size_t>(nmax) * kBodyValues);
@@ -198,7 +198,7 @@ void PairEllipsoidBK::gather_bodies() {
     for (int k = 0; k < 3; ++k) body[k] = 0.5 * values[i][k];  // diameters → semi-axes
     for (int k = 3; k < kBodyValues; ++k) body[k] = values[i][k];
   }
-  comm->forward_comm_pair(this);
+  if (to_ghosts) comm->forward_comm_pair(this);
 }
 
 int PairEllipsoidBK::pack_forward_comm(int n, int* send_list, double* buffer, int /*pbc_flag*/, int* /*pbc*/) {
@@ -231,7 +231,7 @@ void PairEllipsoidBK::compute(int eflag, int vflag) {
   ev_init(eflag, vflag);
   if (!history_->slots_match_neighbor_list())
     fail_one(error, FLERR, style_prefix() + "contact history is out of step with the neighbor list (internal error)");
-  gather_bodies();
+  gather_bodies(true);
 
   const int nlocal = atom->nlocal;
   const int nall = nlocal + atom->nghost;

@@ -51,7 +51,7 @@ class PairEllipsoidBK : public LAMMPS_NS::Pair {
   [[nodiscard]] std::size_t type_index(int i, int j) const {
     return static_cast<std::size_t>(i) * static_cast<std::size_t>(atom->ntypes + 1) + static_cast<std::size_t>(j);
   }
-  void gather_bodies();
+  void gather_bodies(bool to_ghosts);
   void check_shapes();
   [[nodiscard]] BodyState body_state(int index) const;
 
