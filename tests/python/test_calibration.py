@@ -103,6 +103,16 @@ def test_hertz_data_beyond_the_yield_point_fails_clearly():
         ellc.calibrate([case])
 
 
+def test_plastic_data_close_to_hertz_is_not_mistaken_for_elastic():
+    # Loaded to 4 delta_Y only, the law is within ~1.4 % of Hertz: still plastic data.
+    body_i = body(GEOMETRIES["sphere"][0])
+    contact = ellc.Contact.between(body_i, body_i)
+    overlaps = np.linspace(0.0, 4.0 * contact.constants.yield_overlap, 41)[1:]
+    forces = contact.force(overlaps) * (1 + 0.01 * np.random.default_rng(3).standard_normal(40))
+    result = ellc.calibrate([ellc.CalibrationCase("early", body_i, body_i, overlaps, forces)])
+    assert 1.6 < result.cases[0].shared.lambda_max < 4.0
+
+
 def test_fewer_than_four_geometries_keep_the_rates_of_the_prior():
     result = ellc.calibrate(synthetic_cases(noise=0.0, names=["sphere", "slim"]))
     assert not result.rates_fitted and result.amplitudes_fitted

@@ -325,20 +325,6 @@ CalibrationResult calibrate(const std::vector<CalibrationCase>& cases, const Cal
                "(the paper went to 15 % of r^I + r^J)";
       throw InputError(data.name, where.str());
     }
-    // Elastic data beyond δ_Y: the force stays on the Hertz curve.
-    double deviation_sq = 0.0;
-    for (const LambdaSample& sample : entry.profile) {
-      const double hertz = constants.hertz_coefficient * sample.overlap * std::sqrt(sample.overlap);
-      deviation_sq += (sample.force / hertz - 1.0) * (sample.force / hertz - 1.0);
-    }
-    const double hertz_deviation = std::sqrt(deviation_sq / static_cast<double>(entry.profile.size()));
-    if (hertz_deviation < options.elastic_tolerance) {
-      where << "the data never leaves the elastic regime: beyond delta_Y = " << constants.yield_overlap
-            << " µm the force stays on the Hertz curve (RMS deviation " << format_percent(hertz_deviation)
-            << " < " << format_percent(options.elastic_tolerance)
-            << "), so there is no plastic transition to fit; is the material elastic-plastic?";
-      throw InputError(data.name, where.str());
-    }
     if (entry.profile.size() < options.min_plastic_points) {
       where << "only " << entry.profile.size() << " loading points beyond delta_Y = " << constants.yield_overlap
             << " µm: expected at least " << options.min_plastic_points;
@@ -350,6 +336,23 @@ CalibrationResult calibrate(const std::vector<CalibrationCase>& cases, const Cal
     if (!entry.own_exponent_fitted)  // n is not pinned by this case: the prior's n, as the paper fixed n = 1.8
       entry.own = fit_case(entry.profile, yield_factor, options.prior.fit.transition_exponent);
     entry.own_rms = rms_error(entry.profile, entry.own, yield_factor);
+    // Elastic data beyond δ_Y: the force stays on the Hertz curve, and Hertz describes it as well
+    // as the fitted law does. (Early in the transition the law itself is close to Hertz: data
+    // loaded to 4 δ_Y deviates by only ~1.4 %, so closeness alone would reject it.)
+    double deviation_sq = 0.0;
+    for (const LambdaSample& sample : entry.profile) {
+      const double hertz = constants.hertz_coefficient * sample.overlap * std::sqrt(sample.overlap);
+      deviation_sq += (sample.force / hertz - 1.0) * (sample.force / hertz - 1.0);
+    }
+    const double hertz_deviation = std::sqrt(deviation_sq / static_cast<double>(entry.profile.size()));
+    if (hertz_deviation < options.elastic_tolerance && hertz_deviation <= 1.25 * entry.own_rms + 0.001) {
+      where << "the data never leaves the elastic regime: beyond delta_Y = " << constants.yield_overlap
+            << " µm the force stays on the Hertz curve (RMS deviation " << format_percent(hertz_deviation)
+            << " < " << format_percent(options.elastic_tolerance) << ", no worse than the fitted law's "
+            << format_percent(entry.own_rms)
+            << "), so there is no plastic transition to fit; is the material elastic-plastic?";
+      throw InputError(data.name, where.str());
+    }
     if (entry.own.lambda_max >= kLambdaMaxUpper * (1 - 1e-6) || entry.own.epsilon_max >= kEpsilonMaxUpper * (1 - 1e-6)) {
       where << "lambda_FEM of eq. (51) shows no plateau (the fit ran to lambda_max = " << entry.own.lambda_max
             << ", epsilon_max = " << entry.own.epsilon_max
