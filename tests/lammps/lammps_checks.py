@@ -112,10 +112,12 @@ def check_restart(args):
     with tempfile.TemporaryDirectory() as work:
         common = ["-in", args.input, "-log", "none", "-var", "steps", args.steps]
         restart = ["-var", "restart", os.path.join(work, "split.restart")]
-        reference = run([args.lmp, *common, "-var", "mode", "split"], work)
+        common += ["-var", "dissipative", args.dissipative]
+        reference = run([args.lmp, *common, "-var", "mode", args.reference], work)
         first = run([args.lmp, *common, *restart, "-var", "mode", "first"], work)
         second = run([args.lmp, *common, *restart, "-var", "mode", "second"], work)
-    compare_thermo(reference, first + second, args.digits, "restart split vs in-process split")
+    what = "in-process split" if args.reference == "split" else "single run"
+    compare_thermo(reference, first + second, args.digits, f"restart split vs {what}")
 
 
 def main():
@@ -137,6 +139,9 @@ def main():
         command.add_argument("--input", required=True)
         command.add_argument("--steps", default="1000")
         command.add_argument("--digits", type=int, default=10)
+        if name == "restart":
+            command.add_argument("--reference", choices=["split", "full"], default="split")
+            command.add_argument("--dissipative", choices=["yes", "no"], default="yes")
         if name == "mpi":
             command.add_argument("--mpirun", required=True)
             command.add_argument("--mpirun-flag", action="append", default=[])
