@@ -23,6 +23,17 @@ def _axes(axes, **figure_options):
     return plt.subplots(**figure_options)[1]
 
 
+def style_normalized_force_axes(axes):
+    """Labels, limits, grid and legend of an F/F_pY against delta/delta_Y plot (Fig. 13, 15)."""
+    axes.set_xlabel(r"$\delta_n / \delta_Y$")
+    axes.set_ylabel(r"$F_n / F_{pY}$")
+    axes.set_xlim(left=0)
+    axes.set_ylim(bottom=0)
+    axes.grid(alpha=0.3)
+    axes.legend(loc="upper left")
+    return axes
+
+
 def plot_normalized_force(overlap, force, yield_overlap, yield_force, axes=None, label="model", data=None,
                           **line_options):
     """F/F_pY against delta/delta_Y (paper Fig. 13 and 15).
@@ -36,13 +47,7 @@ def plot_normalized_force(overlap, force, yield_overlap, yield_force, axes=None,
     if data is not None:
         axes.plot(np.asarray(data[0]) / yield_overlap, np.asarray(data[1]) / yield_force, ".", color="tab:cyan",
                   label="data")
-    axes.set_xlabel(r"$\delta_n / \delta_Y$")
-    axes.set_ylabel(r"$F_n / F_{pY}$")
-    axes.set_xlim(left=0)
-    axes.set_ylim(bottom=0)
-    axes.grid(alpha=0.3)
-    axes.legend(loc="upper left")
-    return axes
+    return style_normalized_force_axes(axes)
 
 
 def plot_lambda_profile(overlap_over_yield, lambda_data, lambda_fit=None, axes=None, label=None,

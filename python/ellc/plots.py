@@ -14,6 +14,8 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
+from ellc.figures import style_normalized_force_axes  # noqa: E402
+
 
 def read_columns(path):
     """Reads a CSV with a header into a dict of column name -> list (floats where possible)."""
@@ -39,12 +41,7 @@ def plot_force_overlap(columns, axes, title=None):
     if "force_elastic_fully_plastic_over_yield" in columns:
         axes.plot(x, columns["force_elastic_fully_plastic_over_yield"], ":", color="tab:gray",
                   label="elastic-fully plastic (Thornton)")
-    axes.set_xlabel(r"$\delta_n / \delta_Y$")
-    axes.set_ylabel(r"$F_n / F_{pY}$")
-    axes.set_xlim(left=0)
-    axes.set_ylim(bottom=0)
-    axes.grid(alpha=0.3)
-    axes.legend(loc="upper left")
+    style_normalized_force_axes(axes)
     if title:
         axes.set_title(title, fontsize=9)
 
