@@ -16,33 +16,55 @@ constexpr double kFinalStep = 1e-9;           // a Newton step this small is tak
 constexpr double kMaxStep = 0.5;              // radians per Newton step
 constexpr double kFullStep = 1e-7;            // below this the Newton step is taken without a line search
 
+// Both bodies are evaluated together: in every Eigen::Array2d below lane 0 belongs to I and
+// lane 1 to J, so each product and each sqrt/division serves both bodies (one SSE2 instruction).
+using Lanes = Eigen::Array2d;
+
 // The overlap along a unit n and its gradient p_I(n) − p_J(n).
 struct AlongNormal {
   Eigen::Vector3d normal;
-  Eigen::Vector3d arm_i;  // p_I − c_I
-  Eigen::Vector3d arm_j;  // c_J − p_J
-  double reach_i;         // ρ_I(n)
-  double reach_j;         // ρ_J(n)
-  double overlap;         // g(n)
-  Eigen::Vector3d gradient;
+  Lanes arm_x, arm_y, arm_z;  // a_k = S_k n / ρ_k: lane I = p_I − c_I, lane J = c_J − p_J
+  Lanes reach;                // ρ_k(n)
+  Lanes inverse_reach;        // 1 / ρ_k(n)
+  double overlap;             // g(n)
+  Eigen::Vector3d gradient;   // p_I − p_J
+
+  [[nodiscard]] Eigen::Vector3d arm(int lane) const noexcept { return {arm_x[lane], arm_y[lane], arm_z[lane]}; }
 };
 
+// S_I and S_J, entry by entry (symmetric: six entries).
 struct PairData {
-  const Eigen::Matrix3d& shape_i;
-  const Eigen::Matrix3d& shape_j;
+  Lanes s00, s01, s02, s11, s12, s22;
   Eigen::Vector3d offset;  // r = c_J − c_I
+
+  PairData(const Eigen::Matrix3d& shape_i, const Eigen::Matrix3d& shape_j, const Eigen::Vector3d& r) noexcept
+      : s00(shape_i(0, 0), shape_j(0, 0)),
+        s01(shape_i(0, 1), shape_j(0, 1)),
+        s02(shape_i(0, 2), shape_j(0, 2)),
+        s11(shape_i(1, 1), shape_j(1, 1)),
+        s12(shape_i(1, 2), shape_j(1, 2)),
+        s22(shape_i(2, 2), shape_j(2, 2)),
+        offset(r) {}
+
+  // S_k v for both bodies, as three lane pairs.
+  void image(const Eigen::Vector3d& v, Lanes& x, Lanes& y, Lanes& z) const noexcept {
+    x = s00 * v.x() + s01 * v.y() + s02 * v.z();
+    y = s01 * v.x() + s11 * v.y() + s12 * v.z();
+    z = s02 * v.x() + s12 * v.y() + s22 * v.z();
+  }
 
   [[nodiscard]] AlongNormal along(const Eigen::Vector3d& unit_normal) const noexcept {
     AlongNormal value;
     value.normal = unit_normal;
-    const Eigen::Vector3d image_i = shape_i * unit_normal;
-    const Eigen::Vector3d image_j = shape_j * unit_normal;
-    value.reach_i = std::sqrt(unit_normal.dot(image_i));
-    value.reach_j = std::sqrt(unit_normal.dot(image_j));
-    value.arm_i = image_i * (1.0 / value.reach_i);  // one division, not three
-    value.arm_j = image_j * (1.0 / value.reach_j);
-    value.overlap = value.reach_i + value.reach_j - unit_normal.dot(offset);
-    value.gradient = value.arm_i + value.arm_j - offset;
+    Lanes x, y, z;
+    image(unit_normal, x, y, z);
+    value.reach = (x * unit_normal.x() + y * unit_normal.y() + z * unit_normal.z()).sqrt();
+    value.inverse_reach = value.reach.inverse();
+    value.arm_x = x * value.inverse_reach;
+    value.arm_y = y * value.inverse_reach;
+    value.arm_z = z * value.inverse_reach;
+    value.overlap = value.reach.sum() - unit_normal.dot(offset);
+    value.gradient = Eigen::Vector3d(value.arm_x.sum(), value.arm_y.sum(), value.arm_z.sum()) - offset;
     return value;
   }
 };
@@ -56,8 +78,7 @@ struct Solve {
   bool converged = false;
 };
 
-// Tangential Hessian of ρ_I + ρ_J at n: Σ_k (tₐᵀ S_k t_b − (tₐ·a_k)(t_b·a_k)) / ρ_k with
-// a_k = S_k n / ρ_k. The two S_k/ρ_k are summed first, so one pair of products serves both bodies.
+// Tangential Hessian of ρ_I + ρ_J at n: Σ_k (tₐᵀ S_k t_b − (tₐ·a_k)(t_b·a_k)) / ρ_k.
 struct Hessian2 {
   double h11;
   double h12;
@@ -65,25 +86,25 @@ struct Hessian2 {
 };
 
 Hessian2 reach_hessian(const PairData& pair, const AlongNormal& at, const geometry_detail::TangentFrame& frame) noexcept {
-  const double inverse_i = 1.0 / at.reach_i;
-  const double inverse_j = 1.0 / at.reach_j;
-  const Eigen::Matrix3d combined = pair.shape_i * inverse_i + pair.shape_j * inverse_j;
-  const Eigen::Vector3d combined_t1 = combined * frame.t1;
-  const Eigen::Vector3d combined_t2 = combined * frame.t2;
-  const double ai1 = frame.t1.dot(at.arm_i);
-  const double ai2 = frame.t2.dot(at.arm_i);
-  const double aj1 = frame.t1.dot(at.arm_j);
-  const double aj2 = frame.t2.dot(at.arm_j);
-  return {frame.t1.dot(combined_t1) - ai1 * ai1 * inverse_i - aj1 * aj1 * inverse_j,
-          frame.t2.dot(combined_t1) - ai1 * ai2 * inverse_i - aj1 * aj2 * inverse_j,
-          frame.t2.dot(combined_t2) - ai2 * ai2 * inverse_i - aj2 * aj2 * inverse_j};
+  const Eigen::Vector3d& t1 = frame.t1;
+  const Eigen::Vector3d& t2 = frame.t2;
+  Lanes x1, y1, z1, x2, y2, z2;
+  pair.image(t1, x1, y1, z1);
+  pair.image(t2, x2, y2, z2);
+  const Lanes a1 = at.arm_x * t1.x() + at.arm_y * t1.y() + at.arm_z * t1.z();
+  const Lanes a2 = at.arm_x * t2.x() + at.arm_y * t2.y() + at.arm_z * t2.z();
+  const Lanes q11 = x1 * t1.x() + y1 * t1.y() + z1 * t1.z();
+  const Lanes q12 = x1 * t2.x() + y1 * t2.y() + z1 * t2.z();
+  const Lanes q22 = x2 * t2.x() + y2 * t2.y() + z2 * t2.z();
+  return {((q11 - a1 * a1) * at.inverse_reach).sum(), ((q12 - a1 * a2) * at.inverse_reach).sum(),
+          ((q22 - a2 * a2) * at.inverse_reach).sum()};
 }
 
 // Damped Newton on the unit sphere for a local minimum of g. Monotone in g.
 Solve common_normal(const PairData& pair, const AlongNormal& start) noexcept {
   Solve solve;
   solve.at = start;
-  const double scale = solve.at.reach_i + solve.at.reach_j;
+  const double scale = solve.at.reach.sum();
   const double gradient_tolerance = kGradientTolerance * scale;
   while (true) {
     const AlongNormal& at = solve.at;
@@ -147,8 +168,8 @@ void fill_support_geometry(const Ellipsoid& body_i, const Ellipsoid& body_j, con
                            ContactGeometry& geometry) noexcept {
   geometry.normal = at.normal;
   geometry.overlap = at.overlap;
-  geometry.surface_point_i = body_i.center() + at.arm_i;
-  geometry.surface_point_j = body_j.center() - at.arm_j;
+  geometry.surface_point_i = body_i.center() + at.arm(0);
+  geometry.surface_point_j = body_j.center() - at.arm(1);
   geometry.point = 0.5 * (geometry.surface_point_i + geometry.surface_point_j);
 }
 
@@ -168,7 +189,7 @@ void mark_separated(const Ellipsoid& body_i, const Ellipsoid& body_j, const Alon
 // the bodies' reach along n, the "far side" stationary point) and everything is finite.
 bool physical(const Solve& solve, const Eigen::Vector3d& offset) noexcept {
   return solve.converged && solve.at.normal.dot(offset) > 0.0 && std::isfinite(solve.at.overlap) &&
-         solve.at.arm_i.allFinite() && solve.at.arm_j.allFinite();
+         solve.at.arm_x.allFinite() && solve.at.arm_y.allFinite() && solve.at.arm_z.allFinite();
 }
 
 // The solved common normal: contact (with curvatures and α) or, for g ≤ 0, separated.
@@ -183,8 +204,8 @@ void mark_solved(const Ellipsoid& body_i, const Ellipsoid& body_j, const AlongNo
   fill_support_geometry(body_i, body_j, at, geometry);
   // Both sides in one tangent frame; at the point with normal ±n, 1/|∇F| is the support radius.
   const auto frame = geometry_detail::tangent_frame(at.normal);
-  geometry.curvature_i = body_i.curvature_in_frame(at.normal, frame, at.reach_i);
-  geometry.curvature_j = body_j.curvature_in_frame(-at.normal, frame, at.reach_j);
+  geometry.curvature_i = body_i.curvature_in_frame(at.normal, frame, at.reach[0]);
+  geometry.curvature_j = body_j.curvature_in_frame(-at.normal, frame, at.reach[1]);
   geometry.alpha = pair_principal_directions(geometry.curvature_i, geometry.curvature_j, at.normal);
   store_warm_start(at.normal, result.warm_start);
 }
