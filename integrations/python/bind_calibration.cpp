@@ -84,8 +84,12 @@ void bind_calibration(py::module_& module) {
       [](const TransitionPoint& point, const py::handle& ratios, double yield_pressure_factor) {
         const DoubleArray values = vector_argument(ratios, "contact_radius_ratio");
         auto out = new_vector<double>(values.size());
-        for (py::ssize_t index = 0; index < values.size(); ++index)
-          out.mutable_data()[index] = profile_lambda(point, values.data()[index], yield_pressure_factor);
+        double* lambdas = out.mutable_data();
+        {
+          py::gil_scoped_release release;
+          for (py::ssize_t index = 0; index < values.size(); ++index)
+            lambdas[index] = profile_lambda(point, values.data()[index], yield_pressure_factor);
+        }
         return out;
       },
       py::arg("point"), py::arg("contact_radius_ratio"), py::arg("yield_pressure_factor") = 1.6,
@@ -95,7 +99,12 @@ void bind_calibration(py::module_& module) {
       [](const ContactConstants& constants, const py::handle& overlaps, const py::handle& forces) {
         const DoubleArray overlap_array = vector_argument(overlaps, "overlaps");
         const DoubleArray force_array = vector_argument(forces, "forces", overlap_array.size(), "overlaps");
-        return profile_arrays(lambda_profile(constants, view(overlap_array), view(force_array)));
+        std::vector<LambdaSample> samples;
+        {
+          py::gil_scoped_release release;
+          samples = lambda_profile(constants, view(overlap_array), view(force_array));
+        }
+        return profile_arrays(samples);
       },
       py::arg("constants"), py::arg("overlaps"), py::arg("forces"),
       "lambda_FEM of eq. (51) on the virgin-loading points beyond delta_Y: a dict of arrays overlap, force, "

@@ -76,3 +76,15 @@ def test_vectorized_helpers(contact):
     np.testing.assert_allclose(fit.lambda_max(np.array([0.0, 0.25])), [1.05 + 2.42, 1.05 * np.exp(-4.62 / 4) + 2.42])
     profile = contact.lambda_profile([0.1, 1.0, 10.0])
     assert np.isnan(profile[0]) and profile[2] == pytest.approx(contact.constants.lambda_max)
+
+
+def test_batch_calls_run_concurrently_in_threads(contact):
+    """The batch loops release the GIL; threads must still get exactly the serial results."""
+    from concurrent.futures import ThreadPoolExecutor
+
+    paths = [np.linspace(0.0, 0.5 + index, 20000) for index in range(8)]
+    serial = [contact.evaluate_path(path).force for path in paths]
+    with ThreadPoolExecutor(max_workers=4) as pool:
+        threaded = list(pool.map(lambda path: contact.evaluate_path(path).force, paths))
+    for expected, got in zip(serial, threaded):
+        np.testing.assert_array_equal(got, expected)

@@ -1,6 +1,7 @@
 #include "ellc/calibration/calibration_output.hpp"
 
 #include <algorithm>
+#include <filesystem>
 #include <fstream>
 #include <limits>
 #include <stdexcept>
@@ -27,6 +28,8 @@ std::vector<std::string> write_calibration_tables(const CalibrationResult& resul
                                                   const std::string& prefix) {
   std::vector<std::string> written;
   const double factor = result.law.yield_pressure_factor;
+  if (const auto folder = std::filesystem::path(prefix).parent_path(); !folder.empty())
+    std::filesystem::create_directories(folder);
   {
     std::ofstream file = open_table(prefix + "_lambda.csv", written);
     file << "case,overlap,overlap_over_yield,contact_radius_ratio,force,lambda_data,lambda_case_fit,"
