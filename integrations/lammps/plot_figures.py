@@ -56,13 +56,17 @@ def two_particle(args):
 
 def calendering(args):
     data = read(args.csv)
-    fig, ax = plt.subplots(figsize=(6.4, 4.2))
-    ax.plot(data["time"], data["plate_stress_mpa"], label="top plate")
-    ax.plot(data["time"], data["bottom_stress_mpa"], label="bottom wall")
-    ax.set_xlabel("time [µs]")
-    ax.set_ylabel("stress [MPa]")
-    ax.set_title("Calendering in LAMMPS (examples/lammps/in.calendering)")
-    ax.legend(frameon=False)
+    fig, (left, right) = plt.subplots(1, 2, figsize=(9.6, 3.8))
+    left.plot(data["time"], data["plate_stress_mpa"], label="top plate")
+    left.plot(data["time"], data["bottom_stress_mpa"], label="bottom wall")
+    left.set_xlabel("time [µs]")
+    left.set_ylabel("stress [MPa]")
+    left.legend(frameon=False)
+    start = data["plate_z"][0]
+    right.plot([start - z for z in data["plate_z"]], data["plate_stress_mpa"], color="tab:blue")
+    right.set_xlabel("plate travel [µm]")
+    right.set_ylabel("plate stress [MPa]")
+    fig.suptitle(args.title)
     fig.tight_layout()
     fig.savefig(args.output, dpi=130)
 
@@ -76,6 +80,7 @@ def main():
     two.add_argument("-o", "--output", required=True)
     cal = sub.add_parser("calendering")
     cal.add_argument("csv")
+    cal.add_argument("--title", default="Calendering in LAMMPS (examples/lammps/in.calendering)")
     cal.add_argument("-o", "--output", required=True)
     args = parser.parse_args()
     {"two-particle": two_particle, "calendering": calendering}[args.figure](args)
