@@ -1,5 +1,7 @@
 #include "ellc/engine/broad_phase.hpp"
 
+#include "ellc/engine/contact_force.hpp"
+
 #include <algorithm>
 #include <cmath>
 
@@ -78,7 +80,7 @@ void wrap_positions(ParticleSet& particles, const Box& box) noexcept {
   }
 }
 
-std::vector<PairSlot> find_candidate_pairs(const ParticleSet& particles, const Box& box, double skin) {
+std::vector<PairSlot> find_candidate_pairs(const ParticleSet& particles, const Box& box, double skin, bool parallel) {
   const std::size_t count = particles.size();
   if (count < 2) return {};
   const double max_radius = *std::max_element(particles.bounding_radius.begin(), particles.bounding_radius.end());
@@ -111,7 +113,7 @@ std::vector<PairSlot> find_candidate_pairs(const ParticleSet& particles, const B
   const auto& x = particles.position;
   const auto& radius = particles.bounding_radius;
 
-#pragma omp parallel for schedule(dynamic, 16)
+#pragma omp parallel for schedule(dynamic, 16) if (parallel)
   for (int cell = 0; cell < grid.count(); ++cell) {
     int thread = 0;
 #ifdef _OPENMP
@@ -177,7 +179,7 @@ double carry_over_history(std::vector<PairSlot>& previous, std::vector<PairSlot>
     if (n < next.size() && next[n].key == old_pair.key) {
       next[n].history = old_pair.history;
     } else if (old_pair.history.active) {
-      released_work += old_pair.history.normal_work;
+      released_work += plastic_work(old_pair.history.constants, old_pair.history.max_overlap);
     }
   }
   return released_work;

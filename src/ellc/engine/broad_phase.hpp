@@ -13,10 +13,11 @@ namespace ellc::engine {
 // Candidate pairs whose bounding spheres come closer than R_i + R_j + skin, sorted by key.
 // Positions must already lie in [0, lx) × [0, ly). Requires lx, ly ≥ 2 (2 R_max + skin) so
 // that the minimum image is the only image in range (checked by the scenario reader).
-[[nodiscard]] std::vector<PairSlot> find_candidate_pairs(const ParticleSet& particles, const Box& box, double skin);
+[[nodiscard]] std::vector<PairSlot> find_candidate_pairs(const ParticleSet& particles, const Box& box, double skin,
+                                                       bool parallel = true);
 
 // Moves the histories of `previous` into `next` where the keys match (both sorted by key).
-// Returns the normal work of active contacts that dropped out of the list (released as
+// Returns the plastic work of active contacts that dropped out of the list (released as
 // dissipated energy by the caller).
 double carry_over_history(std::vector<PairSlot>& previous, std::vector<PairSlot>& next) noexcept;
 

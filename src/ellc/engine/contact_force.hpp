@@ -8,6 +8,8 @@
 //    F_t = −k_t ξ − c_t v_t, k_t = 8 G_e c_c (Mindlin), c_t = 2 ζ sqrt(m* k_t),
 //    |F_t| ≤ µ F_n; when sliding, ξ is reset to −(F_t + c_t v_t)/k_t.
 //  * F_law is the Becker–Kamlah force from evaluate_contact(), used unchanged.
+//  * Energy: plastic_work() of δ_* per contact (dissipated for good), recoverable_energy() of
+//    (δ, δ_*) for what is stored elastically.
 
 #include <Eigen/Core>
 
@@ -34,15 +36,17 @@ struct ContactKinematics {
                                                double overlap, double law_force, const ResponseParameters& parameters,
                                                ContactHistory& history) noexcept;
 
-// Trapezoidal ∫ F_law dδ of the step from (last_overlap, last_force) to (overlap, force).
-void accumulate_normal_work(ContactHistory& history, double overlap, double law_force) noexcept;
-
 // Elastic energy the law gives back on full unloading from (δ, δ_*): ∫ F dδ along the
 // unloading branch (eq. 49) or along Hertz (eq. 10) when the contact never yielded.
 [[nodiscard]] double recoverable_energy(const ContactConstants& constants, double overlap, double max_overlap) noexcept;
 
-// Starts a fresh history (first overlap) or clears it (separation); returns the normal work
-// the cleared history had accumulated, which the caller books as dissipated.
+// Energy the law has dissipated plastically in a contact with history δ_*: the area between the
+// loading curve and the unloading branch, ∫₀^δ* F_load dδ − ∫_δp^δ* F_UL dδ (0 while δ_* ≤ δ_Y).
+// Depends on δ_* only, so purely elastic contacts dissipate exactly nothing, whatever the
+// geometry does. Hertz part in closed form, the plastic part by Simpson's rule.
+[[nodiscard]] double plastic_work(const ContactConstants& constants, double max_overlap) noexcept;
+
+// Clears a history on separation; returns its plastic work, which the caller books as dissipated.
 double clear_history(ContactHistory& history) noexcept;
 
 }  // namespace ellc::engine

@@ -31,9 +31,7 @@ struct WarmStart {
 struct ContactHistory {
   double max_overlap = 0.0;                                      // δ_*, the law's only history
   Eigen::Vector3d tangential_spring = Eigen::Vector3d::Zero();   // ξ, Mindlin history spring
-  double normal_work = 0.0;        // ∫ F_law dδ since the contact began (for the plastic energy)
-  double last_overlap = 0.0;       // δ and F_law at the previous step (trapezoidal work)
-  double last_force = 0.0;
+  double last_overlap = 0.0;       // δ at the last evaluation (for the stored elastic energy)
   bool active = false;             // the bodies overlap (δ > 0)
   bool constants_cached = false;   // sphere pairs: constants built once per contact
   ContactConstants constants;      // cached for sphere pairs; the last constants otherwise

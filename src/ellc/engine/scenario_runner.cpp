@@ -86,6 +86,7 @@ ScenarioRunner::ScenarioRunner(Scenario scenario, RunOptions options)
   settings.box = scenario_.box;
   settings.skin = scenario_.skin;
   settings.max_speed = scenario_.max_speed;
+  settings.parallel_threshold = options_.parallel_threshold;
 
   if (!options_.restart_path.empty()) {
     std::ifstream in(options_.restart_path, std::ios::binary);

@@ -24,6 +24,7 @@ struct RunOptions {
   std::string restart_path;      // checkpoint to continue from (empty: fresh run)
   bool force = false;            // accept a time step above the stability estimate
   bool write_files = true;       // CSV, VTK, checkpoints, summary (tests may switch off)
+  std::size_t parallel_threshold = EngineSettings{}.parallel_threshold;
 };
 
 // The protocol's own state (trivially copyable: stored verbatim in checkpoints).

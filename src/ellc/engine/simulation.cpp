@@ -43,6 +43,7 @@ Simulation::Simulation(const EngineSettings& settings, ParticleSet particles, co
   mean_bounding /= static_cast<double>(std::max<std::size_t>(count, 1));
   skin_ = settings_.skin > 0.0 ? settings_.skin : 0.1 * mean_bounding;
   rebuild_neighbours();
+  refresh_body_frames();
   compute_forces();
 }
 
@@ -54,7 +55,7 @@ ResponseParameters Simulation::response_parameters(double friction) const noexce
 
 void Simulation::rebuild_neighbours() {
   wrap_positions(particles_, settings_.box);
-  std::vector<PairSlot> next = find_candidate_pairs(particles_, settings_.box, skin_);
+  std::vector<PairSlot> next = find_candidate_pairs(particles_, settings_.box, skin_, particles_.size() > settings_.parallel_threshold);
   released_work_ += carry_over_history(pairs_, next);
   pairs_ = std::move(next);
   pair_results_.assign(pairs_.size(), PairResult{});
@@ -62,67 +63,102 @@ void Simulation::rebuild_neighbours() {
   ++rebuilds_;
 }
 
-bool Simulation::neighbours_stale() const noexcept {
-  const double limit_sq = 0.25 * skin_ * skin_;
-  const std::size_t count = particles_.size();
-  bool stale = false;
-#pragma omp parallel for reduction(|| : stale) schedule(static)
-  for (std::size_t slot = 0; slot < count; ++slot)
-    stale = stale || (particles_.position[slot] - reference_position_[slot]).squaredNorm() > limit_sq;
-  return stale;
+void Simulation::refresh_body_frames() noexcept {
+  auto& p = particles_;
+  const std::size_t count = p.size();
+#pragma omp parallel for schedule(static) if (count > settings_.parallel_threshold)
+  for (std::size_t slot = 0; slot < count; ++slot) refresh_body_frame(slot);
+}
+
+void Simulation::refresh_body_frame(std::size_t slot) noexcept {
+  auto& p = particles_;
+  omega_world_[slot] = p.orientation[slot] * p.angular_velocity[slot];
+  if (is_sphere_[slot] == 0) shapes_[slot] = Ellipsoid(p.semi_axes[slot], Pose{p.position[slot], p.orientation[slot]});
 }
 
 void Simulation::step() {
   const double half_dt = 0.5 * settings_.dt;
-  kick(half_dt);
-  drift();
+  const bool stale = kick_and_drift(half_dt);
+  for (auto& wall : walls_) wall.position += settings_.dt * wall.velocity;
   ++step_;
   time_ += settings_.dt;
-  if (neighbours_stale()) rebuild_neighbours();
+  if (stale) {
+    rebuild_neighbours();
+    refresh_body_frames();  // positions were wrapped into the box
+  }
   compute_forces();
-  kick(half_dt);
-  check_runaway();
+  const std::size_t runaway = kick_and_check(half_dt);
+  if (runaway < particles_.size()) report_runaway(runaway);
 }
 
-void Simulation::kick(double half_dt) noexcept {
+// First half kick, drift, the posed shapes of the new configuration, and whether any particle
+// moved more than half the skin since the neighbour list was built.
+bool Simulation::kick_and_drift(double half_dt) noexcept {
   const std::size_t count = particles_.size();
   const Eigen::Vector3d gravity = settings_.gravity;
   const double drag = settings_.drag_rate;
-  auto& p = particles_;
-#pragma omp parallel for schedule(static)
-  for (std::size_t slot = 0; slot < count; ++slot) {
-    p.velocity[slot] += half_dt * (p.force[slot] / p.mass[slot] + gravity - drag * p.velocity[slot]);
-    const Eigen::Vector3d torque_body = p.orientation[slot].conjugate() * p.torque[slot];
-    Eigen::Vector3d& omega = p.angular_velocity[slot];
-    omega += half_dt * (angular_acceleration(p.inertia[slot], omega, torque_body) - drag * omega);
-  }
-}
-
-void Simulation::drift() noexcept {
-  const std::size_t count = particles_.size();
   const double dt = settings_.dt;
+  const double limit_sq = 0.25 * skin_ * skin_;
   auto& p = particles_;
-#pragma omp parallel for schedule(static)
+  bool stale = false;
+#pragma omp parallel for schedule(static) reduction(|| : stale) if (count > settings_.parallel_threshold)
   for (std::size_t slot = 0; slot < count; ++slot) {
+    kick_particle(slot, half_dt, gravity, drag);
     p.position[slot] += dt * p.velocity[slot];
     p.orientation[slot] = advance_orientation(p.orientation[slot], p.angular_velocity[slot], dt);
+    refresh_body_frame(slot);
+    stale = stale || (p.position[slot] - reference_position_[slot]).squaredNorm() > limit_sq;
   }
-  for (auto& wall : walls_) wall.position += dt * wall.velocity;
+  return stale;
 }
 
+void Simulation::kick_particle(std::size_t slot, double half_dt, const Eigen::Vector3d& gravity, double drag) noexcept {
+  auto& p = particles_;
+  p.velocity[slot] += half_dt * (p.force[slot] / p.mass[slot] + gravity - drag * p.velocity[slot]);
+  const Eigen::Vector3d torque_body = p.orientation[slot].conjugate() * p.torque[slot];
+  Eigen::Vector3d& omega = p.angular_velocity[slot];
+  omega += half_dt * (angular_acceleration(p.inertia[slot], omega, torque_body) - drag * omega);
+}
+
+// Second half kick; returns the first slot with a non-finite or runaway velocity (size() if none).
+std::size_t Simulation::kick_and_check(double half_dt) noexcept {
+  const std::size_t count = particles_.size();
+  const Eigen::Vector3d gravity = settings_.gravity;
+  const double drag = settings_.drag_rate;
+  const double limit = settings_.max_speed;
+  const auto& p = particles_;
+  std::size_t first_bad = count;
+#pragma omp parallel for schedule(static) reduction(min : first_bad) if (count > settings_.parallel_threshold)
+  for (std::size_t slot = 0; slot < count; ++slot) {
+    kick_particle(slot, half_dt, gravity, drag);
+    const double speed = p.velocity[slot].norm();
+    const double spin_speed = p.angular_velocity[slot].norm() * p.bounding_radius[slot];
+    const bool bad = !std::isfinite(speed) || !std::isfinite(spin_speed) || !p.position[slot].allFinite() ||
+                     speed > limit || spin_speed > limit;
+    if (bad && slot < first_bad) first_bad = slot;
+  }
+  return first_bad;
+}
+
+// Wall contacts per particle and pair contacts per pair, in one parallel region: the two loops
+// write disjoint results, so the first needs no barrier.
 void Simulation::compute_forces() {
   const std::size_t count = particles_.size();
-#pragma omp parallel for schedule(static)
-  for (std::size_t slot = 0; slot < count; ++slot) evaluate_walls_and_reset(slot);
-  evaluate_pairs();
+  const std::size_t pair_count = pairs_.size();
+  const ResponseParameters pair_parameters = response_parameters(settings_.contact.friction);
+#pragma omp parallel if (count > settings_.parallel_threshold)
+  {
+#pragma omp for schedule(static) nowait
+    for (std::size_t slot = 0; slot < count; ++slot) evaluate_walls_and_reset(slot);
+#pragma omp for schedule(dynamic, 256)
+    for (std::size_t index = 0; index < pair_count; ++index) evaluate_pair(index, pair_parameters);
+  }
   accumulate();
 }
 
 // Wall contacts of one particle; also starts the particle's force and torque sums with them.
 void Simulation::evaluate_walls_and_reset(std::size_t slot) {
   auto& p = particles_;
-  omega_world_[slot] = p.orientation[slot] * p.angular_velocity[slot];
-  if (is_sphere_[slot] == 0) shapes_[slot] = Ellipsoid(p.semi_axes[slot], Pose{p.position[slot], p.orientation[slot]});
   const Ellipsoid* shape = is_sphere_[slot] == 0 ? &shapes_[slot] : nullptr;
   Eigen::Vector3d force = Eigen::Vector3d::Zero();
   Eigen::Vector3d torque = Eigen::Vector3d::Zero();
@@ -147,14 +183,14 @@ void Simulation::evaluate_walls_and_reset(std::size_t slot) {
       if (solution.status == PairStatus::contact) {  // overlapping but below δ_p: no force, history kept
         history.active = true;
         history.max_overlap = solution.law.max_overlap;
-        accumulate_normal_work(history, solution.overlap, 0.0);
+        history.last_overlap = solution.overlap;
         result.contact = true;
       }
       continue;
     }
     history.active = true;
     history.max_overlap = solution.law.max_overlap;
-    accumulate_normal_work(history, solution.overlap, solution.law.force);
+    history.last_overlap = solution.overlap;
     const Eigen::Vector3d lever = solution.point - p.position[slot];
     ContactKinematics kinematics{solution.normal,
                                  Eigen::Vector3d(0.0, 0.0, wall.velocity) - p.velocity[slot] - omega_world_[slot].cross(lever),
@@ -171,54 +207,49 @@ void Simulation::evaluate_walls_and_reset(std::size_t slot) {
   p.torque[slot] = torque;
 }
 
-void Simulation::evaluate_pairs() {
-  const std::size_t count = pairs_.size();
-  const ResponseParameters parameters = response_parameters(settings_.contact.friction);
+void Simulation::evaluate_pair(std::size_t index, const ResponseParameters& parameters) {
   auto& p = particles_;
-#pragma omp parallel for schedule(dynamic, 256)
-  for (std::size_t index = 0; index < count; ++index) {
-    PairSlot& pair = pairs_[index];
-    PairResult& result = pair_results_[index];
-    result = PairResult{};
-    ContactHistory& history = pair.history;
-    const std::uint32_t i = pair.i;
-    const std::uint32_t j = pair.j;
-    const Eigen::Vector3d centre_j = p.position[j] + pair.shift;
-    const double reach = p.bounding_radius[i] + p.bounding_radius[j];
-    PairSolution solution;
-    if ((centre_j - p.position[i]).squaredNorm() < reach * reach) {
-      const BodyRef body_i{p.semi_axes[i], p.position[i], p.orientation[i], p.mean_radius[i], &shapes_[i]};
-      const BodyRef body_j{p.semi_axes[j], centre_j, p.orientation[j], p.mean_radius[j], &shapes_[j]};
-      solution = solve_pair(body_i, body_j, is_sphere_[i] != 0 && is_sphere_[j] != 0, history, normal_context_);
-    }
-    if (solution.status == PairStatus::failed) {
-      result.failed = true;
-      continue;
-    }
-    if (solution.status == PairStatus::separated) {
-      if (history.active) result.released_work = clear_history(history);
-      continue;
-    }
-    history.active = true;
-    history.max_overlap = solution.law.max_overlap;
-    accumulate_normal_work(history, solution.overlap, solution.law.force);
-    result.contact = true;
-    result.regime = solution.law.regime;
-    if (solution.law.regime == Regime::separated) continue;  // overlapping below δ_p: no force
-    const Eigen::Vector3d lever_i = solution.point - p.position[i];
-    const Eigen::Vector3d lever_j = solution.point - centre_j;
-    const double mass_i = p.mass[i];
-    const double mass_j = p.mass[j];
-    ContactKinematics kinematics{solution.normal,
-                                 p.velocity[j] + omega_world_[j].cross(lever_j) - p.velocity[i] -
-                                     omega_world_[i].cross(lever_i),
-                                 mass_i * mass_j / (mass_i + mass_j)};
-    const Eigen::Vector3d on_j =
-        contact_response(kinematics, *solution.constants, solution.overlap, solution.law.force, parameters, history);
-    result.force_on_j = on_j;
-    result.torque_i = -lever_i.cross(on_j);
-    result.torque_j = lever_j.cross(on_j);
+  PairSlot& pair = pairs_[index];
+  PairResult& result = pair_results_[index];
+  result = PairResult{};
+  ContactHistory& history = pair.history;
+  const std::uint32_t i = pair.i;
+  const std::uint32_t j = pair.j;
+  const Eigen::Vector3d centre_j = p.position[j] + pair.shift;
+  const double reach = p.bounding_radius[i] + p.bounding_radius[j];
+  PairSolution solution;
+  if ((centre_j - p.position[i]).squaredNorm() < reach * reach) {
+    const BodyRef body_i{p.semi_axes[i], p.position[i], p.orientation[i], p.mean_radius[i], &shapes_[i]};
+    const BodyRef body_j{p.semi_axes[j], centre_j, p.orientation[j], p.mean_radius[j], &shapes_[j]};
+    solution = solve_pair(body_i, body_j, is_sphere_[i] != 0 && is_sphere_[j] != 0, history, normal_context_);
   }
+  if (solution.status == PairStatus::failed) {
+    result.failed = true;
+    return;
+  }
+  if (solution.status == PairStatus::separated) {
+    if (history.active) result.released_work = clear_history(history);
+    return;
+  }
+  history.active = true;
+  history.max_overlap = solution.law.max_overlap;
+  history.last_overlap = solution.overlap;
+  result.contact = true;
+  result.regime = solution.law.regime;
+  if (solution.law.regime == Regime::separated) return;  // overlapping below δ_p: no force
+  const Eigen::Vector3d lever_i = solution.point - p.position[i];
+  const Eigen::Vector3d lever_j = solution.point - centre_j;
+  const double mass_i = p.mass[i];
+  const double mass_j = p.mass[j];
+  ContactKinematics kinematics{solution.normal,
+                               p.velocity[j] + omega_world_[j].cross(lever_j) - p.velocity[i] -
+                                   omega_world_[i].cross(lever_i),
+                               mass_i * mass_j / (mass_i + mass_j)};
+  const Eigen::Vector3d on_j =
+      contact_response(kinematics, *solution.constants, solution.overlap, solution.law.force, parameters, history);
+  result.force_on_j = on_j;
+  result.torque_i = -lever_i.cross(on_j);
+  result.torque_j = lever_j.cross(on_j);
 }
 
 // Serial, in the fixed order of the pair list: the only place where contributions meet.
@@ -246,20 +277,9 @@ void Simulation::accumulate() {
   }
 }
 
-void Simulation::check_runaway() const {
+void Simulation::report_runaway(std::size_t first_bad) const {
   const auto& p = particles_;
-  const std::size_t count = p.size();
   const double limit = settings_.max_speed;
-  std::size_t first_bad = count;
-#pragma omp parallel for reduction(min : first_bad) schedule(static)
-  for (std::size_t slot = 0; slot < count; ++slot) {
-    const double speed = p.velocity[slot].norm();
-    const double spin_speed = p.angular_velocity[slot].norm() * p.bounding_radius[slot];
-    const bool bad = !std::isfinite(speed) || !std::isfinite(spin_speed) || !p.position[slot].allFinite() ||
-                     speed > limit || spin_speed > limit;
-    if (bad && slot < first_bad) first_bad = slot;
-  }
-  if (first_bad == count) return;
   const double speed = p.velocity[first_bad].norm();
   const std::string what = std::isfinite(speed) && p.position[first_bad].allFinite()
                                ? "runaway velocity " + std::to_string(speed) + " µm/µs (limit " +
@@ -284,11 +304,22 @@ double Simulation::kinetic_energy() const noexcept {
 double Simulation::plastic_dissipation() const noexcept {
   double energy = released_work_;
   const auto remaining = [](const ContactHistory& h) {
-    return h.active ? h.normal_work - recoverable_energy(h.constants, h.last_overlap, h.max_overlap) : 0.0;
+    return h.active ? plastic_work(h.constants, h.max_overlap) : 0.0;
   };
   for (const auto& pair : pairs_) energy += remaining(pair.history);
   for (const auto& histories : wall_history_)
     for (const auto& history : histories) energy += remaining(history);
+  return energy;
+}
+
+double Simulation::contact_elastic_energy() const noexcept {
+  double energy = 0.0;
+  const auto stored = [](const ContactHistory& h) {
+    return h.active ? recoverable_energy(h.constants, h.last_overlap, h.max_overlap) : 0.0;
+  };
+  for (const auto& pair : pairs_) energy += stored(pair.history);
+  for (const auto& histories : wall_history_)
+    for (const auto& history : histories) energy += stored(history);
   return energy;
 }
 

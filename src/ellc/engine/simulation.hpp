@@ -69,7 +69,9 @@ class Simulation {
 
   // Observables (serial sums in slot order: deterministic).
   [[nodiscard]] double kinetic_energy() const noexcept;  // translational + rotational, pJ
-  [[nodiscard]] double plastic_dissipation() const noexcept;  // ∫F_law dδ minus what the law gives back, pJ
+  [[nodiscard]] double plastic_dissipation() const noexcept;
+  // Elastic energy stored in the contacts: what the law would give back on full unloading, pJ.
+  [[nodiscard]] double contact_elastic_energy() const noexcept;  // ∫F_law dδ minus what the law gives back, pJ
   [[nodiscard]] ContactCounts contact_counts() const noexcept;
   // Force the particles push a wall with, along the wall's outward direction, per box area (MPa).
   [[nodiscard]] double wall_pressure(int wall) const noexcept;
@@ -102,14 +104,16 @@ class Simulation {
   };
 
   void rebuild_neighbours();
-  [[nodiscard]] bool neighbours_stale() const noexcept;
+  void refresh_body_frames() noexcept;
+  void refresh_body_frame(std::size_t slot) noexcept;
+  [[nodiscard]] bool kick_and_drift(double half_dt) noexcept;
+  [[nodiscard]] std::size_t kick_and_check(double half_dt) noexcept;
+  void kick_particle(std::size_t slot, double half_dt, const Eigen::Vector3d& gravity, double drag) noexcept;
   void compute_forces();
-  void evaluate_pairs();
+  void evaluate_pair(std::size_t index, const ResponseParameters& parameters);
   void evaluate_walls_and_reset(std::size_t slot);
   void accumulate();
-  void kick(double half_dt) noexcept;
-  void drift() noexcept;
-  void check_runaway() const;
+  [[noreturn]] void report_runaway(std::size_t slot) const;
   [[nodiscard]] ResponseParameters response_parameters(double friction) const noexcept;
 
   EngineSettings settings_;
@@ -126,7 +130,7 @@ class Simulation {
   std::array<std::vector<ContactHistory>, 2> wall_history_;  // per particle slot
   std::array<std::vector<WallResult>, 2> wall_results_;
   double skin_ = 0.0;
-  double released_work_ = 0.0;  // normal work of deleted contacts (all dissipated)
+  double released_work_ = 0.0;  // plastic work of deleted contacts
   std::uint64_t failures_ = 0;
   std::uint64_t step_ = 0;
   std::uint64_t rebuilds_ = 0;

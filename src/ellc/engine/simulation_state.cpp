@@ -15,9 +15,7 @@ void put(std::ostream& out, const ContactHistory& h) {
   using binary::put;
   put(out, h.max_overlap);
   put(out, h.tangential_spring);
-  put(out, h.normal_work);
   put(out, h.last_overlap);
-  put(out, h.last_force);
   put(out, h.active);
   put(out, h.constants_cached);
   put(out, h.constants);
@@ -27,9 +25,7 @@ void get(std::istream& in, ContactHistory& h) {
   using binary::get;
   get(in, h.max_overlap);
   get(in, h.tangential_spring);
-  get(in, h.normal_work);
   get(in, h.last_overlap);
-  get(in, h.last_force);
   get(in, h.active);
   get(in, h.constants_cached);
   get(in, h.constants);

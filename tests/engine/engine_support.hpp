@@ -1,0 +1,29 @@
+#pragma once
+// Shared helpers of the engine tests: NMC settings, the quick calendering scenario, state dumps.
+
+#include <string>
+
+#include "ellc/engine/scenario.hpp"
+#include "ellc/engine/scenario_runner.hpp"
+#include "ellc/engine/simulation.hpp"
+
+namespace ellc::engine::testing {
+
+inline const Material kNmc{142000.0, 0.25, 7900.0};
+inline constexpr double kScaledDensity = 4.7e-3 * 1000.0;  // ng/µm³
+
+// Settings for a few free bodies: no damping, no friction, no gravity, far walls.
+[[nodiscard]] EngineSettings free_settings(NormalModel model);
+
+// Text of examples/calendering_quick.toml, optionally with one line replaced.
+[[nodiscard]] std::string quick_scenario_text();
+[[nodiscard]] std::string replace_line(std::string text, const std::string& starts_with, const std::string& line);
+[[nodiscard]] Scenario quick_scenario(const std::string& text);
+
+// Options for runs that write nothing to disk.
+[[nodiscard]] RunOptions in_memory(std::size_t parallel_threshold = 0);
+
+// The full simulation state as bytes (write_state): equal bytes = bitwise-equal runs.
+[[nodiscard]] std::string state_bytes(const Simulation& simulation);
+
+}  // namespace ellc::engine::testing

@@ -1,0 +1,148 @@
+// Physics of the integrator and the contact response: energy, restitution, momentum.
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "ellc/engine/packing.hpp"
+#include "ellc/engine/random.hpp"
+#include "ellc/engine/time_step.hpp"
+#include "ellc/law/contact_constants.hpp"
+#include "engine_support.hpp"
+
+namespace ellc::engine {
+namespace {
+
+using testing::free_settings;
+using testing::kNmc;
+using testing::kScaledDensity;
+
+// A purely elastic sphere dropped on the bottom wall under gravity: kinetic + potential + the
+// Hertz energy stored in the contact stays constant through the bounce (velocity Verlet,
+// no damping), and the sphere comes back to its drop height.
+TEST(EngineDynamics, ElasticSphereFallingOnWallConservesEnergy) {
+  EngineSettings settings = free_settings(NormalModel::hertz);
+  const double gravity = 0.5;
+  settings.gravity = Eigen::Vector3d(0.0, 0.0, -gravity);
+  const double radius = 5.0;
+  const double drop = 1.0;  // µm of free fall before contact: impact at 1 µm/µs
+  ParticleSet particles;
+  particles.add(0, Eigen::Vector3d::Constant(radius), kScaledDensity, Eigen::Vector3d(100.0, 100.0, radius + drop),
+                Eigen::Quaterniond::Identity());
+  settings.dt = stable_time_step(particles, kScaledDensity, kNmc);
+  Simulation sim(settings, particles, {Wall{0.0, 0.0, 1, {}}, Wall{1000.0, 0.0, -1, {}}});
+  const double mass = sim.particles().mass[0];
+  const auto energy = [&] {
+    return sim.kinetic_energy() + mass * gravity * sim.particles().position[0].z() + sim.contact_elastic_energy();
+  };
+  const double initial = energy();
+  double worst = 0.0;
+  bool touched = false;
+  double apex = 0.0;
+  // Fall (2 µs), contact (~0.5 µs), rise back: 5 µs in all.
+  const auto steps = static_cast<int>(5.0 / settings.dt);
+  for (int step = 0; step < steps; ++step) {
+    sim.step();
+    worst = std::max(worst, std::abs(energy() - initial) / initial);
+    touched = touched || sim.contact_counts().wall_contacts > 0;
+    if (touched) apex = std::max(apex, sim.particles().position[0].z());
+  }
+  EXPECT_TRUE(touched);
+  RecordProperty("max_relative_energy_error", std::to_string(worst));
+  EXPECT_LT(worst, 2e-3) << "energy drift over the bounce";
+  EXPECT_NEAR(apex, radius + drop, 2e-3 * drop) << "rebound height";
+  EXPECT_EQ(sim.plastic_dissipation(), 0.0);
+}
+
+// Thornton (1997), J. Appl. Mech. 64, 383: restitution of elastic–perfectly plastic spheres,
+// e = (6√3/5)^{1/2} [1 − (v_y/v)²/6]^{1/2} [ (v_y/v) / (v_y/v + 2 sqrt(6/5 − (v_y/v)²/5)) ]^{1/4}.
+double thornton_restitution(double ratio) {  // ratio = v_y / v_impact ≤ 1
+  return std::sqrt(6.0 * std::sqrt(3.0) / 5.0) * std::sqrt(1.0 - ratio * ratio / 6.0) *
+         std::pow(ratio / (ratio + 2.0 * std::sqrt(6.0 / 5.0 - ratio * ratio / 5.0)), 0.25);
+}
+
+// Head-on collision of two equal spheres with the law in its Thornton limit (λ ≡ 1.6, model-notes
+// §4). v_y is the impact speed whose kinetic energy m* v_y²/2 equals the Hertz work up to δ_Y.
+// Tolerance 1.5 %: the time discretisation (about 30 steps per contact at dt = 0.05 estimate).
+TEST(EngineDynamics, RestitutionMatchesThornton1997) {
+  const double radius = 5.0;
+  EngineSettings base = free_settings(NormalModel::becker_kamlah);
+  base.contact.law = LawParameters{}.elastic_fully_plastic();
+  const ContactConstants constants =
+      make_contact_constants(mix(kNmc, kNmc), {1 / radius, 1 / radius}, {1 / radius, 1 / radius}, 0.0, 2 * radius,
+                             HertzMode::hale, base.contact.law);
+  ParticleSet probe;
+  probe.add(0, Eigen::Vector3d::Constant(radius), kScaledDensity, Eigen::Vector3d::Zero(), Eigen::Quaterniond::Identity());
+  const double reduced_mass = 0.5 * probe.mass[0];
+  const double yield_speed =
+      std::sqrt(2.0 * 0.4 * constants.hertz_coefficient * std::pow(constants.yield_overlap, 2.5) / reduced_mass);
+  for (const double multiple : {3.0, 10.0, 30.0}) {
+    const double speed = multiple * yield_speed;
+    ParticleSet particles;
+    particles.add(0, Eigen::Vector3d::Constant(radius), kScaledDensity, Eigen::Vector3d(100, 100, 100),
+                  Eigen::Quaterniond::Identity());
+    particles.add(1, Eigen::Vector3d::Constant(radius), kScaledDensity, Eigen::Vector3d(100, 100, 100 + 2 * radius + 1e-3),
+                  Eigen::Quaterniond::Identity());
+    particles.velocity[0] = Eigen::Vector3d(0, 0, 0.5 * speed);
+    particles.velocity[1] = Eigen::Vector3d(0, 0, -0.5 * speed);
+    EngineSettings settings = base;
+    settings.dt = 0.05 * stable_time_step(particles, kScaledDensity, kNmc);
+    Simulation sim(settings, particles, {Wall{-1000.0, 0.0, 1, {}}, Wall{1000.0, 0.0, -1, {}}});
+    bool touched = false;
+    for (int step = 0; step < 2'000'000; ++step) {
+      sim.step();
+      const bool contact = sim.contact_counts().particle_contacts > 0;
+      touched = touched || contact;
+      if (touched && !contact) break;
+    }
+    ASSERT_TRUE(touched);
+    const double separation_speed = sim.particles().velocity[1].z() - sim.particles().velocity[0].z();
+    const double restitution = separation_speed / speed;
+    const double expected = thornton_restitution(1.0 / multiple);
+    RecordProperty("restitution_at_" + std::to_string(static_cast<int>(multiple)) + "_vy", std::to_string(restitution));
+    EXPECT_NEAR(restitution, expected, 0.015 * expected) << "v/v_y = " << multiple;
+  }
+}
+
+// Ellipsoids with friction and damping in a periodic box, no walls reached, no gravity: the total
+// linear momentum is conserved to rounding (every contact force acts on both bodies).
+TEST(EngineDynamics, MomentumIsConserved) {
+  PackingSpec spec;
+  spec.count = 60;
+  spec.mean_radius = 4.0;
+  spec.radius_spread = 0.1;
+  spec.seed = 11;
+  spec.density = kScaledDensity;
+  spec.insertion_fraction = 0.3;
+  const Box box{42.0, 42.0};
+  ParticleSet particles = generate_packing(spec, box, 500.0, ellipsoid_overlap_test());
+  Random random(5);
+  for (auto& velocity : particles.velocity)
+    velocity = Eigen::Vector3d(random.uniform(-1, 1), random.uniform(-1, 1), random.uniform(-1, 1));
+  for (auto& omega : particles.angular_velocity)
+    omega = Eigen::Vector3d(random.uniform(-0.1, 0.1), random.uniform(-0.1, 0.1), random.uniform(-0.1, 0.1));
+  EngineSettings settings = testing::free_settings(NormalModel::becker_kamlah);
+  settings.contact.friction = 0.5;
+  settings.contact.damping_ratio = 0.1;
+  settings.box = box;
+  settings.dt = stable_time_step(particles, kScaledDensity, kNmc);
+  const auto momentum = [](const ParticleSet& p) {
+    Eigen::Vector3d total = Eigen::Vector3d::Zero();
+    for (std::size_t slot = 0; slot < p.size(); ++slot) total += p.mass[slot] * p.velocity[slot];
+    return total;
+  };
+  double scale = 0.0;
+  for (std::size_t slot = 0; slot < particles.size(); ++slot) scale += particles.mass[slot] * particles.velocity[slot].norm();
+  const Eigen::Vector3d initial = momentum(particles);
+  Simulation sim(settings, particles, {Wall{-1e4, 0.0, 1, {}}, Wall{1e4, 0.0, -1, {}}});
+  std::size_t contacts_seen = 0;
+  for (int step = 0; step < 1500; ++step) {
+    sim.step();
+    contacts_seen += sim.contact_counts().particle_contacts;
+  }
+  EXPECT_GT(contacts_seen, 0U) << "the test needs collisions";
+  EXPECT_LT((momentum(sim.particles()) - initial).norm(), 1e-12 * scale);
+}
+
+}  // namespace
+}  // namespace ellc::engine

@@ -1,0 +1,91 @@
+// Bad scenario input: each error is an InputError that names the field.
+
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "ellc/io/input_error.hpp"
+#include "engine_support.hpp"
+
+namespace ellc::engine {
+namespace {
+
+using testing::in_memory;
+using testing::quick_scenario;
+using testing::quick_scenario_text;
+using testing::replace_line;
+
+// The message of the InputError thrown by `action`, or "" if none was thrown.
+template <typename Action>
+std::string input_error(Action&& action) {
+  try {
+    action();
+  } catch (const InputError& error) {
+    return error.what();
+  }
+  return "";
+}
+
+TEST(EngineScenarioInput, QuickExampleIsValid) { EXPECT_NO_THROW(quick_scenario(quick_scenario_text())); }
+
+TEST(EngineScenarioInput, UnknownKeyIsNamed) {
+  const std::string text = replace_line(quick_scenario_text(), "seed", "seed = 1\ncolour = \"blue\"");
+  const std::string message = input_error([&] { (void)quick_scenario(text); });
+  EXPECT_NE(message.find("packing.colour"), std::string::npos) << message;
+}
+
+TEST(EngineScenarioInput, ParticleLargerThanBoxIsNamed) {
+  const std::string text = replace_line(quick_scenario_text(), "size", "size = [30.0, 42.0]");
+  const std::string message = input_error([&] { (void)quick_scenario(text); });
+  EXPECT_NE(message.find("box.size"), std::string::npos) << message;
+  EXPECT_NE(message.find("too large"), std::string::npos) << message;
+}
+
+TEST(EngineScenarioInput, OverlappingWallsAreNamed) {
+  const std::string text =
+      replace_line(quick_scenario_text(), "target_pressure", "target_thickness = 5.0");
+  const std::string message = input_error([&] { (void)quick_scenario(text); });
+  EXPECT_NE(message.find("calendering.target_thickness"), std::string::npos) << message;
+  const std::string negative =
+      replace_line(quick_scenario_text(), "target_pressure", "target_thickness = -1.0");
+  EXPECT_NE(input_error([&] { (void)quick_scenario(negative); }).find("calendering.target_thickness"), std::string::npos);
+}
+
+TEST(EngineScenarioInput, BadValuesAreNamed) {
+  const std::string text = replace_line(quick_scenario_text(), "friction", "friction = -0.3");
+  EXPECT_NE(input_error([&] { (void)quick_scenario(text); }).find("contact.friction"), std::string::npos);
+  const std::string shape = replace_line(quick_scenario_text(), "shape", "shape = \"cube\"");
+  EXPECT_NE(input_error([&] { (void)quick_scenario(shape); }).find("packing.shape"), std::string::npos);
+}
+
+TEST(EngineScenarioInput, TimeStepAboveEstimateNeedsForce) {
+  const std::string text = replace_line(quick_scenario_text(), "safety", "safety = 0.2\ndt = 1.0");
+  const Scenario scenario = quick_scenario(text);
+  const std::string message = input_error([&] { ScenarioRunner runner(scenario, in_memory()); });
+  EXPECT_NE(message.find("time.dt"), std::string::npos) << message;
+  EXPECT_NE(message.find("--force"), std::string::npos) << message;
+  RunOptions forced = in_memory();
+  forced.force = true;
+  ScenarioRunner runner(scenario, forced);
+  ASSERT_FALSE(runner.warnings().empty());
+  EXPECT_NE(runner.warnings().back().find("--force"), std::string::npos);
+}
+
+// A time step far above the estimate (forced) blows up: the run stops naming particle and step.
+TEST(EngineScenarioInput, RunawayNamesParticleAndStep) {
+  const std::string text = replace_line(quick_scenario_text(), "safety", "safety = 0.2\ndt = 2.0");
+  RunOptions forced = in_memory();
+  forced.force = true;
+  ScenarioRunner runner(quick_scenario(text), forced);
+  try {
+    runner.advance(100'000);
+    FAIL() << "no runaway detected";
+  } catch (const RunawayError& error) {
+    const std::string message = error.what();
+    EXPECT_NE(message.find("particle " + std::to_string(error.particle_id())), std::string::npos) << message;
+    EXPECT_NE(message.find("step " + std::to_string(error.step())), std::string::npos) << message;
+  }
+}
+
+}  // namespace
+}  // namespace ellc::engine
