@@ -64,6 +64,16 @@ def constants_fit(rows: list[dict], key: str = "fixed", paper_rates: bool = Fals
     return {"m": m, "o": o, "p": p, "s": s, "t": t, "u": u, "n": n, "lam_rms": lam_rms, "eps_rms": eps_rms}
 
 
+def paper_rms(rows: list[dict]) -> dict:
+    """rms of the paper's eq. (54) against the per-case lambda_max, eps_max (n = 1.8 fits)."""
+    x = np.array([r["x"] for r in rows])
+    lam = np.array([r["fixed"].lam_max for r in rows])
+    eps = np.array([r["fixed"].eps_max for r in rows])
+    k = PAPER
+    return {**k, "lam_rms": float(np.sqrt(np.mean((k["m"] * np.exp(k["o"] * x) + k["p"] - lam) ** 2))),
+            "eps_rms": float(np.sqrt(np.mean((k["s"] * np.exp(k["t"] * x) + k["u"] - eps) ** 2)))}
+
+
 def force_effect(rows: list[dict], ours: dict) -> list[dict]:
     """Per case: FE error of the law with the paper's and with our constants, and their difference."""
     out = []
@@ -115,8 +125,12 @@ def plot_constants(rows: list[dict], ours: dict) -> str:
                                                  ("eps_max", "s", "t", "u", "ε_max"))):
         y = np.array([getattr(r["fixed"], key) for r in rows])
         plateau = np.array([r["fixed"].plateau for r in rows])
-        ax.plot(x[plateau], y[plateau], "o", label="FE fit (plateau reached)")
-        ax.plot(x[~plateau], y[~plateau], "s", mfc="none", label="FE fit (extrapolated)")
+        odd = np.array([abs(r["pre_yield"]) >= HERTZ_CONSISTENT for r in rows])
+        ax.plot(x[plateau & ~odd], y[plateau & ~odd], "o", label="FE fit (plateau reached)")
+        ax.plot(x[~plateau & ~odd], y[~plateau & ~odd], "s", mfc="none", label="FE fit (extrapolated)")
+        ax.plot(x[odd], y[odd], "x", color="k", label="FE off Hertz below δ_Y (> 5 %)")
+        for xi, yi, r in zip(x, y, rows):
+            ax.annotate(r["run"].name[:3], (xi, yi), fontsize=6, xytext=(3, 3), textcoords="offset points")
         ax.plot(grid, PAPER[a] * np.exp(PAPER[b] * grid) + PAPER[c], "-", label="paper eq. 54")
         ax.plot(grid, ours[a] * np.exp(ours[b] * grid) + ours[c], "--", label="ours, eq. 52 (interim)")
         ax.set(xlabel="R_e / r̂^{I,J}", ylabel=label)
