@@ -36,21 +36,27 @@ double Ellipsoid::support_radius(const Eigen::Vector3d& unit_direction) const no
   return std::sqrt(unit_direction.dot(inverse_shape_ * unit_direction));
 }
 
-SurfaceCurvature Ellipsoid::curvature_in_frame(const Eigen::Vector3d& outward_normal,
+SurfaceCurvature curvature_from_shape_operator(double w11, double w12, double w22,
                                                const geometry_detail::TangentFrame& frame,
-                                               double inverse_gradient_norm) const noexcept {
-  // Wₐᵦ = tₐᵀ M_w tᵦ / |M_w (x − c)| (the factors 2 of ∇F = 2 M_w (x − c) and ∇²F = 2 M_w cancel).
-  const Eigen::Vector3d m_t1 = shape_ * frame.t1;
-  const Eigen::Vector3d m_t2 = shape_ * frame.t2;
-  const auto eigen = geometry_detail::symmetric_eigen2(
-      frame.t1.dot(m_t1) * inverse_gradient_norm, frame.t2.dot(m_t1) * inverse_gradient_norm,
-      frame.t2.dot(m_t2) * inverse_gradient_norm, SurfaceCurvature::umbilic_tolerance);
+                                               const Eigen::Vector3d& outward_normal) noexcept {
+  const auto eigen = geometry_detail::symmetric_eigen2(w11, w12, w22, SurfaceCurvature::umbilic_tolerance);
   SurfaceCurvature curvature;
   curvature.kappa_1 = eigen.high;
   curvature.kappa_2 = eigen.low;
   curvature.direction_1 = eigen.x * frame.t1 + eigen.y * frame.t2;
   curvature.direction_2 = outward_normal.cross(curvature.direction_1);
   return curvature;
+}
+
+SurfaceCurvature Ellipsoid::curvature_in_frame(const Eigen::Vector3d& outward_normal,
+                                               const geometry_detail::TangentFrame& frame,
+                                               double inverse_gradient_norm) const noexcept {
+  // Wₐᵦ = tₐᵀ M_w tᵦ / |M_w (x − c)| (the factors 2 of ∇F = 2 M_w (x − c) and ∇²F = 2 M_w cancel).
+  const Eigen::Vector3d m_t1 = shape_ * frame.t1;
+  const Eigen::Vector3d m_t2 = shape_ * frame.t2;
+  return curvature_from_shape_operator(frame.t1.dot(m_t1) * inverse_gradient_norm,
+                                       frame.t2.dot(m_t1) * inverse_gradient_norm,
+                                       frame.t2.dot(m_t2) * inverse_gradient_norm, frame, outward_normal);
 }
 
 SurfaceCurvature Ellipsoid::curvature_with_normal(const Eigen::Vector3d& world_normal) const noexcept {

@@ -16,6 +16,7 @@ constexpr double kFinalStep = 1e-9;           // a Newton step this small is tak
 constexpr double kMaxStep = 0.5;              // radians per Newton step
 constexpr double kFullStep = 1e-7;            // below this the Newton step is taken without a line search
 
+// (EIGEN_ALWAYS_INLINE: these small kernels must be inlined into the Newton loop.)
 // Both bodies are evaluated together: in every Eigen::Array2d below lane 0 belongs to I and
 // lane 1 to J, so each product and each sqrt/division serves both bodies (one SSE2 instruction).
 using Lanes = Eigen::Array2d;
@@ -32,32 +33,51 @@ struct AlongNormal {
   [[nodiscard]] Eigen::Vector3d arm(int lane) const noexcept { return {arm_x[lane], arm_y[lane], arm_z[lane]}; }
 };
 
-// S_I and S_J, entry by entry (symmetric: six entries).
-struct PairData {
+// Two symmetric 3×3 matrices, entry by entry (six lane pairs): lane 0 of body I, lane 1 of J.
+struct SymmetricLanes {
   Lanes s00, s01, s02, s11, s12, s22;
-  Eigen::Vector3d offset;  // r = c_J − c_I
 
-  PairData(const Eigen::Matrix3d& shape_i, const Eigen::Matrix3d& shape_j, const Eigen::Vector3d& r) noexcept
-      : s00(shape_i(0, 0), shape_j(0, 0)),
-        s01(shape_i(0, 1), shape_j(0, 1)),
-        s02(shape_i(0, 2), shape_j(0, 2)),
-        s11(shape_i(1, 1), shape_j(1, 1)),
-        s12(shape_i(1, 2), shape_j(1, 2)),
-        s22(shape_i(2, 2), shape_j(2, 2)),
-        offset(r) {}
+  SymmetricLanes(const Eigen::Matrix3d& of_i, const Eigen::Matrix3d& of_j) noexcept
+      : s00(of_i(0, 0), of_j(0, 0)),
+        s01(of_i(0, 1), of_j(0, 1)),
+        s02(of_i(0, 2), of_j(0, 2)),
+        s11(of_i(1, 1), of_j(1, 1)),
+        s12(of_i(1, 2), of_j(1, 2)),
+        s22(of_i(2, 2), of_j(2, 2)) {}
 
-  // S_k v for both bodies, as three lane pairs.
-  void image(const Eigen::Vector3d& v, Lanes& x, Lanes& y, Lanes& z) const noexcept {
+  // A_k v for both matrices, as three lane pairs.
+  EIGEN_ALWAYS_INLINE void image(const Eigen::Vector3d& v, Lanes& x, Lanes& y, Lanes& z) const noexcept {
     x = s00 * v.x() + s01 * v.y() + s02 * v.z();
     y = s01 * v.x() + s11 * v.y() + s12 * v.z();
     z = s02 * v.x() + s12 * v.y() + s22 * v.z();
   }
+};
 
-  [[nodiscard]] AlongNormal along(const Eigen::Vector3d& unit_normal) const noexcept {
+// tₐᵀ A_k tᵦ for both matrices in a tangent frame.
+struct TangentForms {
+  Lanes q11, q12, q22;
+};
+
+EIGEN_ALWAYS_INLINE TangentForms tangent_forms(const SymmetricLanes& matrices, const geometry_detail::TangentFrame& frame) noexcept {
+  const Eigen::Vector3d& t1 = frame.t1;
+  const Eigen::Vector3d& t2 = frame.t2;
+  Lanes x1, y1, z1, x2, y2, z2;
+  matrices.image(t1, x1, y1, z1);
+  matrices.image(t2, x2, y2, z2);
+  return {x1 * t1.x() + y1 * t1.y() + z1 * t1.z(), x1 * t2.x() + y1 * t2.y() + z1 * t2.z(),
+          x2 * t2.x() + y2 * t2.y() + z2 * t2.z()};
+}
+
+// The inverse shape matrices S_I, S_J and the centre offset.
+struct PairData {
+  SymmetricLanes shapes;
+  Eigen::Vector3d offset;  // r = c_J − c_I
+
+  [[nodiscard]] EIGEN_ALWAYS_INLINE AlongNormal along(const Eigen::Vector3d& unit_normal) const noexcept {
     AlongNormal value;
     value.normal = unit_normal;
     Lanes x, y, z;
-    image(unit_normal, x, y, z);
+    shapes.image(unit_normal, x, y, z);
     value.reach = (x * unit_normal.x() + y * unit_normal.y() + z * unit_normal.z()).sqrt();
     value.inverse_reach = value.reach.inverse();
     value.arm_x = x * value.inverse_reach;
@@ -85,19 +105,14 @@ struct Hessian2 {
   double h22;
 };
 
-Hessian2 reach_hessian(const PairData& pair, const AlongNormal& at, const geometry_detail::TangentFrame& frame) noexcept {
+EIGEN_ALWAYS_INLINE Hessian2 reach_hessian(const PairData& pair, const AlongNormal& at, const geometry_detail::TangentFrame& frame) noexcept {
+  const TangentForms forms = tangent_forms(pair.shapes, frame);
   const Eigen::Vector3d& t1 = frame.t1;
   const Eigen::Vector3d& t2 = frame.t2;
-  Lanes x1, y1, z1, x2, y2, z2;
-  pair.image(t1, x1, y1, z1);
-  pair.image(t2, x2, y2, z2);
   const Lanes a1 = at.arm_x * t1.x() + at.arm_y * t1.y() + at.arm_z * t1.z();
   const Lanes a2 = at.arm_x * t2.x() + at.arm_y * t2.y() + at.arm_z * t2.z();
-  const Lanes q11 = x1 * t1.x() + y1 * t1.y() + z1 * t1.z();
-  const Lanes q12 = x1 * t2.x() + y1 * t2.y() + z1 * t2.z();
-  const Lanes q22 = x2 * t2.x() + y2 * t2.y() + z2 * t2.z();
-  return {((q11 - a1 * a1) * at.inverse_reach).sum(), ((q12 - a1 * a2) * at.inverse_reach).sum(),
-          ((q22 - a2 * a2) * at.inverse_reach).sum()};
+  return {((forms.q11 - a1 * a1) * at.inverse_reach).sum(), ((forms.q12 - a1 * a2) * at.inverse_reach).sum(),
+          ((forms.q22 - a2 * a2) * at.inverse_reach).sum()};
 }
 
 // Damped Newton on the unit sphere for a local minimum of g. Monotone in g.
@@ -202,10 +217,16 @@ void mark_solved(const Ellipsoid& body_i, const Ellipsoid& body_j, const AlongNo
   result.status = NarrowPhaseStatus::contact;
   ContactGeometry& geometry = result.geometry;
   fill_support_geometry(body_i, body_j, at, geometry);
-  // Both sides in one tangent frame; at the point with normal ±n, 1/|∇F| is the support radius.
+  // Shape operators of both implicit surfaces (x − c)ᵀ M_w (x − c) = 1 in one tangent frame:
+  // Wₐᵦ = tₐᵀ M_w tᵦ / |M_w (x − c)|, and at the point with normal ±n, 1/|M_w (x − c)| = ρ(n)
+  // (Ellipsoid::curvature_in_frame, both bodies at once).
   const auto frame = geometry_detail::tangent_frame(at.normal);
-  geometry.curvature_i = body_i.curvature_in_frame(at.normal, frame, at.reach[0]);
-  geometry.curvature_j = body_j.curvature_in_frame(-at.normal, frame, at.reach[1]);
+  const TangentForms forms = tangent_forms(SymmetricLanes(body_i.shape(), body_j.shape()), frame);
+  const Lanes w11 = forms.q11 * at.reach;
+  const Lanes w12 = forms.q12 * at.reach;
+  const Lanes w22 = forms.q22 * at.reach;
+  geometry.curvature_i = curvature_from_shape_operator(w11[0], w12[0], w22[0], frame, at.normal);
+  geometry.curvature_j = curvature_from_shape_operator(w11[1], w12[1], w22[1], frame, -at.normal);
   geometry.alpha = pair_principal_directions(geometry.curvature_i, geometry.curvature_j, at.normal);
   store_warm_start(at.normal, result.warm_start);
 }
@@ -216,7 +237,7 @@ NarrowPhaseResult ellipsoid_contact(const Ellipsoid& body_i, const Ellipsoid& bo
                                     const NarrowPhaseWarmStart* warm) noexcept {
   NarrowPhaseResult result;  // status failed until proven otherwise
   if (!body_i.valid() || !body_j.valid()) return result;
-  const PairData pair{body_i.inverse_shape(), body_j.inverse_shape(), body_j.center() - body_i.center()};
+  const PairData pair{SymmetricLanes(body_i.inverse_shape(), body_j.inverse_shape()), body_j.center() - body_i.center()};
   const double distance = pair.offset.norm();
   auto centre_line = [&]() -> Eigen::Vector3d {
     return distance > 0.0 ? Eigen::Vector3d(pair.offset * (1.0 / distance)) : body_i.rotation().col(0);
