@@ -124,7 +124,10 @@ void bind_calibration(py::module_& module) {
       .def_readonly("shared_rms", &CaseCalibration::shared_rms)
       .def_readonly("model_rms", &CaseCalibration::model_rms,
                     "RMS relative force error of the calibrated law (eq. 52 constants) on this case.")
-      .def_readonly("plateau_reached", &CaseCalibration::plateau_reached);
+      .def_readonly("plateau_reached", &CaseCalibration::plateau_reached)
+      .def_readonly("transition_found", &CaseCalibration::transition_found,
+                    "False when lambda_FEM never rises from 1.6 (epsilon_max on its lower bound): a run the law "
+                    "cannot describe; see the warnings.");
 
   py::class_<CalibrationResult>(module, "CalibrationResult", "Result of ellc.calibrate.")
       .def_readonly("cases", &CalibrationResult::cases)

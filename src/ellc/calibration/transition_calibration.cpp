@@ -360,6 +360,7 @@ CalibrationResult calibrate(const std::vector<CalibrationCase>& cases, const Cal
       throw InputError(data.name, where.str());
     }
     if (entry.own.epsilon_max <= kEpsilonMaxLower * (1 + 1e-6)) {
+      entry.transition_found = false;
       const LambdaSample& first = entry.profile.front();
       std::ostringstream warning;
       warning.precision(3);

@@ -65,6 +65,7 @@ struct CaseCalibration {
   double shared_rms = 0.0;  // same for step 2
   double model_rms = 0.0;   // same for the final eq. (52) constants (the law as `ellc curve` runs it)
   bool plateau_reached = false;  // the data reaches c_c ≥ ε_max c_Y (else λ_max, ε_max are extrapolated)
+  bool transition_found = true;  // false: ε_max of step 1 ended on its lower bound, λ_FEM never rises
 };
 
 struct CalibrationResult {
