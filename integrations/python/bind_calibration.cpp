@@ -125,6 +125,12 @@ void bind_calibration(py::module_& module) {
       .def_readonly("model_rms", &CaseCalibration::model_rms,
                     "RMS relative force error of the calibrated law (eq. 52 constants) on this case.")
       .def_readonly("plateau_reached", &CaseCalibration::plateau_reached)
+      .def("__repr__", [](const CaseCalibration& c) {
+        return py::str("CaseCalibration(name={!r}, radius_ratio={:.4g}, lambda_max={:.4g}, epsilon_max={:.4g}, "
+                       "n={:.4g}, plateau_reached={}, model_rms={:.3g})")
+            .format(c.name, c.radius_ratio, c.shared.lambda_max, c.shared.epsilon_max, c.shared.exponent,
+                    c.plateau_reached, c.model_rms);
+      })
       .def_readonly("transition_found", &CaseCalibration::transition_found,
                     "False when lambda_FEM never rises from 1.6 (epsilon_max on its lower bound): a run the law "
                     "cannot describe; see the warnings.");
@@ -137,6 +143,10 @@ void bind_calibration(py::module_& module) {
       .def_readonly("rates_fitted", &CalibrationResult::rates_fitted)
       .def_readonly("amplitudes_fitted", &CalibrationResult::amplitudes_fitted)
       .def_readonly("warnings", &CalibrationResult::warnings)
+      .def("__repr__", [](const CalibrationResult& r) {
+        return py::str("CalibrationResult({} cases, fit={!r}, {} warnings)")
+            .format(r.cases.size(), py::cast(r.law.fit), r.warnings.size());
+      })
       .def("model_toml", &model_table_toml, "The [model] table for `ellc curve` / `ellc dem`, as TOML text.")
       .def(
           "write_tables",

@@ -177,7 +177,13 @@ void bind_law(py::module_& module) {
       .def_readonly("yield_pressure_factor", &ContactConstants::yield_pressure_factor)
       .def_readonly("plastic_limit_overlap", &ContactConstants::plastic_limit_overlap)
       .def("validation_error", [](const ContactConstants& c) { return validation_error(c); },
-           "Empty string when the law can be evaluated with these constants, else the reason.");
+           "Empty string when the law can be evaluated with these constants, else the reason.")
+      .def("__repr__", [](const ContactConstants& c) {
+        return py::str("ContactConstants(equivalent_radius={:.6g}, yield_overlap={:.6g}, yield_force={:.6g}, "
+                       "lambda_max={:.6g}, epsilon_max={:.6g}, plastic_limit_overlap={:.6g})")
+            .format(c.equivalent_radius, c.yield_overlap, c.yield_force, c.lambda_max, c.epsilon_max,
+                    c.plastic_limit_overlap);
+      });
 
   module.def(
       "make_contact_constants",
@@ -271,6 +277,9 @@ void bind_law(py::module_& module) {
           },
           py::arg("case"), "The contact of a case file read by read_curve_case (its [model] applies).")
       .def_readonly("constants", &Contact::constants)
+      .def("__repr__", [](const Contact& contact) {
+        return "Contact(" + std::string(py::repr(py::cast(contact.constants))) + ")";
+      })
       .def("evaluate_path", &evaluate_path_arrays, py::arg("overlaps"), py::arg("initial_max_overlap") = 0.0,
            "The law along a 1-D array of overlaps, carrying delta_* from point to point (history kept through "
            "delta <= 0, as `ellc curve` does). Returns a PathResult; its max_overlap[-1] continues the path.")

@@ -101,3 +101,15 @@ def test_hertz_layer_matches_the_constants(case_and_csv):
                                           tip.body_j, tip.alpha, case.body_i.mean_radius + case.body_j.mean_radius,
                                           hertz=case.model.hertz, law=case.model.law)
     assert rebuilt.plastic_limit_overlap == constants.plastic_limit_overlap
+
+
+def test_exact_hertz_mode_matches_the_cli(cli, tmp_path):
+    case_path = SOURCE_DIR / "examples" / "paper_case1.toml"
+    run_cli(cli, "curve", case_path, "-o", tmp_path / "exact.csv", "--hertz", "exact")
+    table = np.genfromtxt(tmp_path / "exact.csv", delimiter=",", names=True, dtype=None, encoding="utf-8")
+    case = ellc.read_curve_case(str(case_path))
+    case.model.hertz = "exact"
+    contact = ellc.Contact.from_case(case)
+    np.testing.assert_allclose(contact.force(case.overlap_path()), table["force"], rtol=RTOL, atol=0)
+    hale = ellc.Contact.between(case.body_i, case.body_j, hertz="hale")
+    assert contact.constants.f1 != hale.constants.f1  # the mode really changed
