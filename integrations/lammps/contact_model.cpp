@@ -57,6 +57,12 @@ PairResult evaluate_pair(const PosedBody& posed_a, const PosedBody& posed_b, con
   if (narrow.status != ellc::NarrowPhaseStatus::contact) {
     forget(history);  // history starts at δ > 0 and ends at δ ≤ 0 (model-notes §5)
     result.geometry_failed = narrow.status == ellc::NarrowPhaseStatus::failed;
+    // A separating axis is kept as the next step's warm start: the narrow phase then proves
+    // separation without its cold start. It is geometry, not contact history (δ_* is zero).
+    if (narrow.status == ellc::NarrowPhaseStatus::separated && narrow.warm_start.valid) {
+      write_warm_start(narrow.warm_start, history);
+      result.keep_warm_start = true;
+    }
     return result;
   }
   const ellc::ContactGeometry& geometry = narrow.geometry;

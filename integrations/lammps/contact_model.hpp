@@ -51,6 +51,7 @@ struct PairResult {
   bool touching = false;
   bool geometry_failed = false;  // the narrow phase could not resolve the pair (invalid bodies)
   int iterations = 0;            // narrow-phase Newton steps
+  bool keep_warm_start = false;  // not touching, but the history holds a separating axis to reuse
   double overlap = 0.0;
   double normal_force = 0.0;  // elastoplastic law + damping, ≥ 0
   ellc::LawResult law;
@@ -62,7 +63,8 @@ struct PairResult {
 };
 
 // Evaluates the contact and updates `history` (HistoryLayout::size() doubles, zero for a new
-// pair). When the bodies do not overlap the history is zeroed (model-notes §5) and touching=false.
+// pair). When the bodies do not overlap, δ_* and the spring are zeroed (model-notes §5),
+// touching=false, and only the narrow phase's separating axis may be kept (keep_warm_start).
 [[nodiscard]] PairResult evaluate_pair(const BodyState& a, const BodyState& b, const PairCoefficients& coefficients,
                                        ellc::HertzMode mode, double timestep, double* history);
 

@@ -70,7 +70,8 @@ class FixContactHistory : public LAMMPS_NS::Fix {
   void set_slot_active(int i, int jj, bool active) {
     slot_active_[slot_offset_[static_cast<std::size_t>(i)] + static_cast<std::size_t>(jj)] = active ? 1 : 0;
   }
-  // Total number of active contacts on this rank (diagnostics and tests).
+  // Slots holding a record on this rank: contacts, and near pairs that keep only the narrow
+  // phase's separating axis (diagnostics).
   [[nodiscard]] long active_contacts() const;
 
  private:
@@ -87,7 +88,8 @@ class FixContactHistory : public LAMMPS_NS::Fix {
   bool newton_pair_ = true;
   // Per atom (owned, and ghost while records are gathered): [tag, v_0 .. v_{n-1}] per partner.
   std::vector<std::vector<double>> records_;
-  // Per neighbor-list entry: values and whether the contact is active (δ > 0 last evaluated).
+  // Per neighbor-list entry: values and whether they are worth keeping (a contact, or a near
+  // pair's separating axis).
   std::vector<std::size_t> slot_offset_;
   std::vector<double> slot_values_;
   std::vector<unsigned char> slot_active_;

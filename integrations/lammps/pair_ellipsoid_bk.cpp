@@ -270,6 +270,7 @@ void PairEllipsoidBK::compute(int eflag, int vflag) {
     mean_radii_[slot] = shapes_.back().mean_radius();
   }
 
+  long touching = 0;
   const NeighList* neighbors = list;
   for (int ii = 0; ii < neighbors->inum; ++ii) {
     const int i = neighbors->ilist[ii];
@@ -307,8 +308,9 @@ void PairEllipsoidBK::compute(int eflag, int vflag) {
         error->warning(FLERR, style_prefix() + "the narrow phase did not converge for atoms " + std::to_string(tag[a]) +
                                   " and " + std::to_string(tag[b]) + " at step " + std::to_string(update->ntimestep) +
                                   "; the pair is treated as not touching (reported once per rank)");
-      if (!during_setup) history_->set_slot_active(i, jj, result.touching);
+      if (!during_setup) history_->set_slot_active(i, jj, result.touching || result.keep_warm_start);
       if (!result.touching) continue;
+      ++touching;
 
       const Eigen::Vector3d force_on_i = i_is_a ? Eigen::Vector3d(-result.force_on_b) : result.force_on_b;
       const Eigen::Vector3d& torque_on_i = i_is_a ? result.torque_on_a : result.torque_on_b;
@@ -328,6 +330,7 @@ void PairEllipsoidBK::compute(int eflag, int vflag) {
                      dz);
     }
   }
+  touching_pairs_ = touching;
   if (vflag_fdotr) virial_fdotr_compute();
 }
 

@@ -44,6 +44,9 @@ class PairEllipsoidBK : public LAMMPS_NS::Pair {
   void unpack_forward_comm(int n, int first, double* buffer) override;
   double memory_usage() override;
 
+  // Pairs in contact (δ > 0) on this rank at the last force evaluation (diagnostics, benchmark).
+  [[nodiscard]] long touching_pairs() const { return touching_pairs_; }
+
  private:
   static constexpr int kBodyValues = 7;  // semi-axes (3), quaternion w i j k (4)
 
@@ -68,6 +71,7 @@ class PairEllipsoidBK : public LAMMPS_NS::Pair {
   std::vector<double> mean_radii_;        // r̂ = (abc)^{1/3}
   bool warned_aspect_ = false;
   long narrow_phase_failures_ = 0;
+  long touching_pairs_ = 0;
 };
 
 }  // namespace ellc_lammps

@@ -109,7 +109,10 @@ TEST_F(SpherePair, KeepsTheLargestOverlapAndForgetsItOnSeparation) {
   EXPECT_EQ(unloading.law.regime, ellc::Regime::unloading);
   const auto apart = at_overlap(-0.1);
   EXPECT_FALSE(apart.touching);
-  for (double value : history) EXPECT_EQ(value, 0.0);
+  // δ_* and the spring are gone; only the separating axis stays, as the narrow phase's warm start.
+  for (int k = 0; k < HistoryLayout::warm_normal; ++k) EXPECT_EQ(history[static_cast<std::size_t>(k)], 0.0);
+  EXPECT_TRUE(apart.keep_warm_start);
+  EXPECT_NEAR(history[HistoryLayout::warm_normal], 1.0, 1e-12);  // the line of centres, a to b
 }
 
 TEST_F(SpherePair, FrictionIsCappedByCoulombAndDampingOpposesApproach) {

@@ -17,7 +17,6 @@
 #include <string>
 #include <vector>
 
-#include "fix_contact_history.hpp"
 #include "lammps_includes.hpp"
 #include "pair_ellipsoid_bk.hpp"
 #include "register_styles.hpp"
@@ -80,10 +79,8 @@ void EllipsoidBK(benchmark::State& state) {
               "pair_style ellipsoid/bk",
               "pair_coeff 1 1 1.42e8 0.25 7.9e6 friction 0.3 damping 0.1 tangential_damping 0.1",
               "fix integrate all nve/asphere"});
-  auto* modify = session.lmp->modify;
-  auto* history = dynamic_cast<ellc_lammps::FixContactHistory*>(
-      modify->fix[modify->find_fix(ellc_lammps::PairEllipsoidBK::kHistoryFixId)]);
-  report(state, 2.0 * static_cast<double>(history->active_contacts()) / (kCells * kCells * kCells));
+  const auto* pair = dynamic_cast<const ellc_lammps::PairEllipsoidBK*>(session.lmp->force->pair);
+  report(state, 2.0 * static_cast<double>(pair->touching_pairs()) / (kCells * kCells * kCells));
 }
 
 void GranularHertzMaterial(benchmark::State& state) {
