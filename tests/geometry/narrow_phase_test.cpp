@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <type_traits>
 
 #include "ellc/geometry/contact_function.hpp"
 #include "geometry_test_support.hpp"
@@ -14,6 +15,11 @@ namespace ellc {
 namespace {
 
 using test::Rng;
+
+// The engine stores one warm start per pair: a small trivially copyable value, cold by default.
+static_assert(std::is_trivially_copyable_v<NarrowPhaseWarmStart>);
+static_assert(std::is_standard_layout_v<NarrowPhaseWarmStart>);
+static_assert(sizeof(NarrowPhaseWarmStart) <= 32);
 
 void expect_finite(const NarrowPhaseResult& result) {
   const ContactGeometry& g = result.geometry;
