@@ -111,7 +111,12 @@ void check_case(const TipCase& tip, HertzMode mode, const Eigen::Quaterniond& wo
       EXPECT_LE(std::abs(general.law.force - reference.force), kTolerance * std::max(reference.force, peak_force))
           << "overlap " << overlap << " regime " << regime_name(reference.regime);
     }
-    EXPECT_EQ(general.law.regime, reference.regime);
+    // The regime too, except where the nominal δ sits on δ_* itself (reloading back to the
+    // previous maximum): there the measured δ may land a rounding error on either side, and
+    // loading and unloading give the same force.
+    if (std::abs(overlap - history_before) > 1e-12 * overlap) {
+      EXPECT_EQ(general.law.regime, reference.regime);
+    }
     EXPECT_LT((general.force_on_j - general.law.force * axis).norm(), 1e-14 * (1.0 + general.law.force));
   }
 }
