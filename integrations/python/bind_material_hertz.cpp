@@ -2,6 +2,8 @@
 
 #include <pybind11/stl.h>
 
+#include <array>
+
 #include "bindings.hpp"
 #include "ellc/hertz/elliptic_hertz.hpp"
 #include "ellc/material/material.hpp"
@@ -93,6 +95,36 @@ void bind_material_and_hertz(py::module_& module) {
       .def_readonly("force", &HertzContact::force);
   module.def("hertz_contact", &hertz_contact, py::arg("shape"), py::arg("effective_modulus"), py::arg("overlap"),
              "a_c, b_c (eq. 8), c_c (eq. 9), p0 (eq. 2) and F_H (eq. 10) at overlap delta >= 0.");
+  module.def(
+      "hertz_contacts",
+      [](const HertzShape& shape, double effective_modulus, const py::handle& overlaps) {
+        const DoubleArray overlap_array = vector_argument(overlaps, "overlaps");
+        const py::ssize_t size = overlap_array.size();
+        std::array<py::array_t<double>, 5> columns{new_vector<double>(size), new_vector<double>(size),
+                                                   new_vector<double>(size), new_vector<double>(size),
+                                                   new_vector<double>(size)};
+        std::array<double*, 5> out{};
+        for (std::size_t column = 0; column < out.size(); ++column) out[column] = columns[column].mutable_data();
+        {
+          py::gil_scoped_release release;
+          for (py::ssize_t index = 0; index < size; ++index) {
+            const HertzContact contact = hertz_contact(shape, effective_modulus, overlap_array.data()[index]);
+            out[0][index] = contact.semi_axis_major;
+            out[1][index] = contact.semi_axis_minor;
+            out[2][index] = contact.equivalent_contact_radius;
+            out[3][index] = contact.peak_pressure;
+            out[4][index] = contact.force;
+          }
+        }
+        py::dict result;
+        const char* names[] = {"semi_axis_major", "semi_axis_minor", "equivalent_contact_radius", "peak_pressure",
+                               "force"};
+        for (std::size_t column = 0; column < columns.size(); ++column) result[names[column]] = columns[column];
+        return result;
+      },
+      py::arg("shape"), py::arg("effective_modulus"), py::arg("overlaps"),
+      "hertz_contact over a 1-D array of overlaps: a dict of arrays semi_axis_major, semi_axis_minor, "
+      "equivalent_contact_radius, peak_pressure, force.");
   module.def(
       "hertz_pressure",
       [](double semi_axis_major, double semi_axis_minor, double peak_pressure, const py::handle& x,

@@ -74,6 +74,14 @@ def test_vectorized_helpers(contact):
     np.testing.assert_allclose(pressure, 2.0 * np.sqrt(1.0 - x ** 2), atol=1e-15)
     fit = ellc.TransitionFit()
     np.testing.assert_allclose(fit.lambda_max(np.array([0.0, 0.25])), [1.05 + 2.42, 1.05 * np.exp(-4.62 / 4) + 2.42])
+    constants = contact.constants
+    shape = ellc.HertzShape()
+    shape.equivalent_radius, shape.f1, shape.f2 = constants.equivalent_radius, constants.f1, constants.f2
+    hertz = ellc.hertz_contacts(shape, constants.effective_modulus, [constants.yield_overlap, 0.5])
+    assert hertz["force"][0] == pytest.approx(constants.yield_force, rel=1e-12)
+    assert hertz["peak_pressure"][0] == pytest.approx(constants.yield_pressure, rel=1e-12)
+    with pytest.raises(ValueError, match="overlaps: expected a 1-D array"):
+        ellc.hertz_contacts(shape, constants.effective_modulus, [[0.1]])
     profile = contact.lambda_profile([0.1, 1.0, 10.0])
     assert np.isnan(profile[0]) and profile[2] == pytest.approx(contact.constants.lambda_max)
 
