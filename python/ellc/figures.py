@@ -8,6 +8,8 @@ tables written by ``ellc curve`` / ``ellc fit``.
 * :func:`plot_normalized_force`  force-overlap, F/F_pY against delta/delta_Y (Fig. 13, 15)
 * :func:`plot_lambda_profile`    lambda against delta/delta_Y with its fit (Fig. 11)
 * :func:`plot_radius_fits`       lambda_max, epsilon_max against R_e/r^ with eq. (52) (Fig. 12)
+* :func:`plot_lambda_panels`     one Fig. 11 panel per calibration case
+* :func:`plot_calibration`       both calibration figures straight from ``ellc.calibrate``
 * :func:`plot_pressure_profiles` contact pressure along a_c and b_c (Fig. 4, 9, 14)
 * :func:`plot_contact_ellipses`  the contact ellipses of the same states
 """
@@ -99,6 +101,65 @@ def plot_radius_fits(radius_ratio, lambda_max, epsilon_max, curve_ratio, lambda_
         axes.grid(alpha=0.3)
         axes.legend()
     return axes_pair
+
+
+def plot_lambda_panels(panels, columns=3):
+    """One lambda-profile panel per case (Fig. 11); returns the figure.
+
+    Each panel is a dict with name, radius_ratio, plateau_reached and the arrays
+    overlap_over_yield, lambda_data, lambda_fit and lambda_model.
+    """
+    import matplotlib.pyplot as plt
+
+    columns = min(columns, max(1, len(panels)))
+    rows = max(1, (len(panels) + columns - 1) // columns)
+    figure, grid = plt.subplots(rows, columns, figsize=(4.2 * columns, 3.4 * rows), dpi=110, squeeze=False)
+    for index, panel in enumerate(panels):
+        axes = grid[index // columns][index % columns]
+        plot_lambda_profile(panel["overlap_over_yield"], panel["lambda_data"], panel["lambda_fit"], axes=axes,
+                            lambda_model=panel["lambda_model"])
+        plateau = "plateau reached" if panel["plateau_reached"] else "plateau NOT reached"
+        axes.set_title(f"{panel['name']}: R_e/r^ = {panel['radius_ratio']:.3g}, {plateau}", fontsize=8)
+        if index == 0:
+            axes.legend(fontsize=7)
+    for index in range(len(panels), rows * columns):
+        grid[index // columns][index % columns].set_visible(False)
+    figure.tight_layout()
+    return figure
+
+
+def plot_calibration(result, prior=None):
+    """Fig. 11 and Fig. 12 of an ``ellc.CalibrationResult``; returns ``(lambda_figure, radius_figure)``.
+
+    ``prior`` is the ``ellc.LawParameters`` to compare with (default: the paper's eq. 53).
+    """
+    import matplotlib.pyplot as plt
+
+    import ellc
+
+    prior = prior or ellc.LawParameters()
+    law = result.law
+    panels = []
+    for case in result.cases:
+        profile = case.profile
+        ratio = profile["contact_radius_ratio"]
+        model = ellc.TransitionPoint(float(law.fit.lambda_max(case.radius_ratio)),
+                                     float(law.fit.epsilon_max(case.radius_ratio)), law.fit.n)
+        panels.append(dict(
+            name=case.name, radius_ratio=case.radius_ratio, plateau_reached=case.plateau_reached,
+            overlap_over_yield=profile["overlap"] / case.yield_overlap, lambda_data=profile["lambda"],
+            lambda_fit=ellc.profile_lambda(case.shared, ratio, law.yield_pressure_factor),
+            lambda_model=ellc.profile_lambda(model, ratio, law.yield_pressure_factor)))
+    lambda_figure = plot_lambda_panels(panels)
+    ratios = np.array([case.radius_ratio for case in result.cases])
+    curve = np.linspace(0.5 * ratios.min(), 1.25 * ratios.max(), 200)
+    radius_figure, axes_pair = plt.subplots(1, 2, figsize=(10, 4.2), dpi=110)
+    plot_radius_fits(ratios, [case.shared.lambda_max for case in result.cases],
+                     [case.shared.epsilon_max for case in result.cases], curve, law.fit.lambda_max(curve),
+                     law.fit.epsilon_max(curve), axes_pair=axes_pair,
+                     prior_curves=(prior.fit.lambda_max(curve), prior.fit.epsilon_max(curve)))
+    radius_figure.tight_layout()
+    return lambda_figure, radius_figure
 
 
 def pressure_along_axes(patch, samples=201):

@@ -54,3 +54,12 @@ def test_plots_command_line(cli, tmp_path):
     result.write_tables(str(tmp_path / "fit"))
     assert plots.main(["fit", str(tmp_path / "fit")]) == 0
     assert (tmp_path / "fit_lambda.png").stat().st_size > 0 and (tmp_path / "fit_radius.png").stat().st_size > 0
+
+
+def test_calibration_figures_from_the_result(tmp_path):
+    result = ellc.calibrate(synthetic_cases(noise=0.01, names=["sphere", "flat", "slim", "fig10"]))
+    lambda_figure, radius_figure = figures.plot_calibration(result)
+    assert len([axes for axes in lambda_figure.axes if axes.get_visible()]) == 4
+    lambda_figure.savefig(tmp_path / "lambda.png")
+    radius_figure.savefig(tmp_path / "radius.png")
+    assert (tmp_path / "radius.png").stat().st_size > 0
