@@ -64,25 +64,17 @@ def fit_command(args):
     samples = read_columns(args.prefix + "_lambda.csv")
     cases = read_columns(args.prefix + "_cases.csv")
     radius = read_columns(args.prefix + "_radius.csv")
-    names = cases["case"] if isinstance(cases["case"], list) else []
-    names = [str(name) for name in names]
-    columns = min(3, max(1, len(names)))
-    rows = (len(names) + columns - 1) // columns
-    figure, grid = plt.subplots(rows, columns, figsize=(4.2 * columns, 3.4 * rows), dpi=110, squeeze=False)
-    case_of_sample = [str(name) for name in samples["case"]]
-    for index, name in enumerate(names):
-        axes = grid[index // columns][index % columns]
-        chosen = np.array([case == name for case in case_of_sample])
-        pick = lambda key: np.asarray(samples[key], dtype=float)[chosen]  # noqa: E731
-        figures.plot_lambda_profile(pick("overlap_over_yield"), pick("lambda_data"), pick("lambda_shared_fit"),
-                                    axes=axes, lambda_model=pick("lambda_model"))
-        plateau = "plateau reached" if float(cases["plateau_reached"][index]) > 0 else "plateau NOT reached"
-        axes.set_title(f"{name}: R_e/r^ = {float(cases['radius_ratio'][index]):.3g}, {plateau}", fontsize=8)
-        if index == 0:
-            axes.legend(fontsize=7)
-    for index in range(len(names), rows * columns):
-        grid[index // columns][index % columns].set_visible(False)
-    figure.tight_layout()
+    case_of_sample = np.array([str(name) for name in samples["case"]])
+    panels = []
+    for index, name in enumerate(str(name) for name in cases["case"]):
+        chosen = case_of_sample == name
+        panel = {key: np.asarray(samples[column], dtype=float)[chosen] for key, column in (
+            ("overlap_over_yield", "overlap_over_yield"), ("lambda_data", "lambda_data"),
+            ("lambda_fit", "lambda_shared_fit"), ("lambda_model", "lambda_model"))}
+        panel.update(name=name, radius_ratio=float(cases["radius_ratio"][index]),
+                     plateau_reached=float(cases["plateau_reached"][index]) > 0)
+        panels.append(panel)
+    figure = figures.plot_lambda_panels(panels)
     figure.savefig(args.prefix + "_lambda.png")
     plt.close(figure)
 
