@@ -72,8 +72,11 @@ def check_curve(args):
         curve_csv = os.path.join(work, "curve.csv")
         lammps_csv = os.path.join(work, "lammps.csv")
         run([args.ellc, "curve", args.case, "-o", curve_csv], work)
-        run([args.lmp, "-in", args.input, "-log", "none", "-screen", "none", "-var", "out", lammps_csv,
-             "-var", "w2", args.w2, "-var", "n", args.points], work)
+        launcher = [args.mpirun, *args.mpirun_flag, "-np", str(args.np)] if args.mpirun else []
+        output = run([*launcher, args.lmp, "-in", args.input, "-log", "none", "-var", "out", lammps_csv,
+                      "-var", "w2", args.w2, "-var", "n", args.points], work)
+        if args.np > 1 and f"{args.np} by 1 by 1 MPI processor grid" not in output:
+            sys.exit(f"expected the two bodies on {args.np} ranks split along x")
         with open(curve_csv) as handle:
             reference = list(csv.DictReader(handle))
         with open(lammps_csv) as handle:
@@ -133,6 +136,9 @@ def main():
     curve.add_argument("--force-scale", type=float, default=1e-3, help="LAMMPS force unit in ellc units (nN -> uN)")
     curve.add_argument("--overlap-scale", type=float, default=20.0)
     curve.add_argument("--tolerance", type=float, default=1e-9)
+    curve.add_argument("--mpirun", default="")
+    curve.add_argument("--mpirun-flag", action="append", default=[])
+    curve.add_argument("--np", type=int, default=1)
     for name in ("mpi", "restart"):
         command = sub.add_parser(name)
         command.add_argument("--lmp", required=True)
