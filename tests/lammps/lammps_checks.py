@@ -72,7 +72,7 @@ def check_curve(args):
         curve_csv = os.path.join(work, "curve.csv")
         lammps_csv = os.path.join(work, "lammps.csv")
         run([args.ellc, "curve", args.case, "-o", curve_csv], work)
-        launcher = [args.mpirun, *args.mpirun_flag, "-np", str(args.np)] if args.mpirun else []
+        launcher = [args.mpirun, *[flag for flag in args.mpirun_flag if flag], "-np", str(args.np)] if args.mpirun else []
         output = run([*launcher, args.lmp, "-in", args.input, "-log", "none", "-var", "out", lammps_csv,
                       "-var", "w2", args.w2, "-var", "n", args.points], work)
         if args.np > 1 and f"{args.np} by 1 by 1 MPI processor grid" not in output:
@@ -104,8 +104,8 @@ def check_curve(args):
 def check_mpi(args):
     with tempfile.TemporaryDirectory() as work:
         common = ["-in", args.input, "-log", "none", "-var", "steps", args.steps]
-        one = run([args.mpirun, *args.mpirun_flag, "-np", "1", args.lmp, *common], work)
-        two = run([args.mpirun, *args.mpirun_flag, "-np", "2", args.lmp, *common], work)
+        one = run([args.mpirun, *[flag for flag in args.mpirun_flag if flag], "-np", "1", args.lmp, *common], work)
+        two = run([args.mpirun, *[flag for flag in args.mpirun_flag if flag], "-np", "2", args.lmp, *common], work)
     if "2 by 1 by 1 MPI processor grid" not in two and "MPI processor grid" not in two:
         sys.exit("the 2-rank run did not report a processor grid")
     compare_thermo(one, two, args.digits, "np 2 vs np 1")
