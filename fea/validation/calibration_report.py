@@ -51,6 +51,17 @@ def hertz_consistent(rows: list[dict]) -> list[dict]:
     return [r for r in rows if abs(r["pre_yield"]) < HERTZ_CONSISTENT]
 
 
+def equal_size(rows: list[dict]) -> list[dict]:
+    return [r for r in rows if abs(r["run"].case.body_i.mean_radius / r["run"].case.body_j.mean_radius - 1) < 1e-9]
+
+
+def subsets(rows: list[dict]) -> dict[str, list[dict]]:
+    """The case selections the constants are fitted on (docs/validation.md Sec. 4)."""
+    good = hertz_consistent(rows)
+    return {f"all {len(rows)} cases": rows, f"{len(good)} Hertz-consistent": good,
+            f"{len(equal_size(good))} Hertz-consistent, r̂^I = r̂^J": equal_size(good)}
+
+
 def constants_fit(rows: list[dict], key: str = "fixed", paper_rates: bool = False) -> dict:
     """m, o, p, s, t, u by eq. (52); paper_rates keeps o, t at the paper's values."""
     x = np.array([r["x"] for r in rows])
@@ -62,6 +73,14 @@ def constants_fit(rows: list[dict], key: str = "fixed", paper_rates: bool = Fals
     s, t, u, eps_rms = fit_exponential(x, eps, t_range)
     n = PAPER["n"] if key == "fixed" else float(np.median([r[key].n for r in rows]))
     return {"m": m, "o": o, "p": p, "s": s, "t": t, "u": u, "n": n, "lam_rms": lam_rms, "eps_rms": eps_rms}
+
+
+def recommended_constants(rows: list[dict]) -> dict:
+    """Our interim set: the paper's decay rates o, t kept (the data do not pin them down), m, p,
+    s, u refitted on the Hertz-consistent equal-size cases (or all Hertz-consistent ones)."""
+    good = hertz_consistent(rows)
+    sel = equal_size(good) if len(equal_size(good)) >= 3 else good
+    return constants_fit(sel, paper_rates=True)
 
 
 def paper_rms(rows: list[dict]) -> dict:

@@ -8,7 +8,7 @@ from .plotting import figure, save
 from .tables import markdown_table, pct
 
 PAIRS = {"e_sphere": "spheres 10/10 um", "e_case2": "case-2 pair (1:1:0.8 / 1:1.25:1.25)",
-         "e_case1": "case-1 pair (1:1.25:1.5 / 1:0.5:0.8)"}
+         "e_case1": "case-1 pair (1:1.25:1.5 / 1:0.5:0.8)", "e_oblate": "oblate pair 1:2:2 (grid g03)"}
 LEVELS = ("coarse", "medium", "fine")
 
 
