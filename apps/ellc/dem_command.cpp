@@ -6,7 +6,11 @@
 
 #include <chrono>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <vector>
 #include <memory>
 #include <string>
 
@@ -89,14 +93,42 @@ void print_summary(const engine::RunSummary& s, const std::string& directory, do
   std::printf("  loaded thickness  %.6g um  (porosity %.4f)\n", s.loaded_thickness, s.loaded_porosity);
   std::printf("  final thickness   %.6g um  (porosity %.4f)\n", s.final_thickness, s.final_porosity);
   std::printf("  springback        %.4g %%\n", s.springback_percent);
-  std::printf("  plastic energy    %.6g pJ\n", s.plastic_dissipation);
+  std::printf("  plastic energy    %.6g pJ (%.6g pJ while calendering)\n", s.plastic_dissipation,
+              s.plastic_dissipation_calendering);
   if (s.narrow_phase_failures > 0)
     std::printf("  narrow phase      %llu failed evaluations (treated as no force)\n",
                 static_cast<unsigned long long>(s.narrow_phase_failures));
   std::printf("  outputs in %s: timeseries.csv summary.txt vtk/ checkpoint.bin\n", directory.c_str());
 }
 
+// OpenMP threads that spin at barriers (libgomp's default) lose their time slices to each other
+// when the machine is busier than its cores, and a 2-thread run then takes ~10x longer than a
+// 1-thread one. libgomp reads its wait policy once, before main(), so `ellc dem` re-executes
+// itself once with GOMP_SPINCOUNT=1000 unless the user set a policy (docs/engine.md, "Threads").
+void prefer_short_spinning() {
+#if defined(__linux__) && defined(_OPENMP)
+  if (std::getenv("OMP_WAIT_POLICY") != nullptr || std::getenv("GOMP_SPINCOUNT") != nullptr) return;
+  std::ifstream cmdline("/proc/self/cmdline", std::ios::binary);
+  std::string text((std::istreambuf_iterator<char>(cmdline)), std::istreambuf_iterator<char>());
+  std::vector<std::string> words;
+  for (std::size_t start = 0; start < text.size();) {
+    const std::size_t end = text.find('\0', start);
+    words.push_back(text.substr(start, end == std::string::npos ? std::string::npos : end - start));
+    if (end == std::string::npos) break;
+    start = end + 1;
+  }
+  if (words.empty()) return;
+  std::vector<char*> arguments;
+  for (auto& word : words) arguments.push_back(word.data());
+  arguments.push_back(nullptr);
+  setenv("GOMP_SPINCOUNT", "1000", 1);
+  std::fflush(nullptr);
+  execv("/proc/self/exe", arguments.data());  // returns only on failure: then run as we are
+#endif
+}
+
 void run_dem(const DemOptions& options) {
+  prefer_short_spinning();
 #ifdef _OPENMP
   if (options.threads > 0) omp_set_num_threads(options.threads);
 #endif

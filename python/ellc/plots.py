@@ -107,6 +107,39 @@ def pressure_command(args):
     return 0
 
 
+def dem_command(args):
+    """Calendering from `ellc dem` timeseries.csv: plate pressure against layer thickness during
+    load, hold and unload, and the energies over time."""
+    columns = read_columns(args.csv)
+    phases = columns["phase"]
+    figure, (left, right) = plt.subplots(1, 2, figsize=(11, 4.4), dpi=110)
+    colours = {"load": "tab:blue", "hold": "tab:orange", "unload": "tab:green"}
+    for phase, colour in colours.items():
+        rows = [k for k, name in enumerate(phases) if name == phase]
+        if rows:
+            left.plot([columns["thickness"][k] for k in rows], [columns["plate_pressure"][k] for k in rows],
+                      ".-", ms=2, lw=1.2, color=colour, label=phase)
+    left.set_xlabel("layer thickness (plate gap) [um]")
+    left.set_ylabel("plate pressure [MPa]")
+    left.set_ylim(bottom=0)
+    left.grid(alpha=0.3)
+    left.legend(loc="upper right")
+    time = columns["time"]
+    right.plot(time, columns["kinetic_energy"], color="tab:red", label="kinetic")
+    right.plot(time, columns["plastic_dissipation"], color="tab:purple", label="plastically dissipated")
+    right.set_xlabel("time [us]")
+    right.set_ylabel("energy [pJ]")
+    right.set_yscale("symlog", linthresh=1.0)
+    right.grid(alpha=0.3)
+    right.legend(loc="upper left")
+    if args.title:
+        figure.suptitle(args.title, fontsize=9)
+    figure.tight_layout()
+    figure.savefig(args.png)
+    plt.close(figure)
+    return 0
+
+
 def main(argv=None):
     parser = argparse.ArgumentParser(prog="python3 -m ellc.plots")
     sub = parser.add_subparsers(dest="command", required=True)
@@ -123,6 +156,11 @@ def main(argv=None):
     pressure.add_argument("png")
     pressure.add_argument("--title")
     pressure.set_defaults(run=pressure_command)
+    dem = sub.add_parser("dem", help="pressure against thickness from `ellc dem` timeseries.csv")
+    dem.add_argument("csv")
+    dem.add_argument("png")
+    dem.add_argument("--title")
+    dem.set_defaults(run=dem_command)
     args = parser.parse_args(argv)
     return args.run(args)
 

@@ -16,7 +16,9 @@ namespace ellc::engine {
 struct SettleSpec {
   double gravity = 0.5;    // µm/µs², along −z
   double drag_rate = 0.5;  // 1/µs, global viscous drag while settling
-  double time = 100.0;     // µs
+  double time = 100.0;     // µs: shortest settling
+  double max_time = 0.0;   // µs: longest settling (0 → 3 × time)
+  double speed_tolerance = 0.05;  // µm/µs: settled when the rms particle speed is below this
 };
 
 struct CalenderingSpec {

@@ -105,6 +105,7 @@ ScenarioRunner::ScenarioRunner(Scenario scenario, RunOptions options)
     simulation_ = std::make_unique<Simulation>(settings, ParticleSet{}, std::array<Wall, 2>{});
     simulation_->read_state(in);
     solid_volume_ = simulation_->particles().total_volume();
+    for (double mass : simulation_->particles().mass) total_mass_ += mass;
     open_outputs(true);
     return;
   }
@@ -112,6 +113,7 @@ ScenarioRunner::ScenarioRunner(Scenario scenario, RunOptions options)
   ParticleSet particles =
       generate_packing(spec, scenario_.box, 0.0, spec.spheres ? OverlapTest{} : ellipsoid_overlap_test());
   solid_volume_ = particles.total_volume();
+  for (double mass : particles.mass) total_mass_ += mass;
   dt_estimate_ = stable_time_step(particles, spec.density, scenario_.contact.material, scenario_.time_step_safety);
   settings.dt = dt_estimate_;
   if (scenario_.dt) {
@@ -172,6 +174,8 @@ void ScenarioRunner::enter_phase(Phase phase) {
       sim.set_wall_position(kTopWall, sim.highest_point() + spec.start_gap);
       sim.set_wall_velocity(kTopWall, -spec.speed);
       state_.load_start_gap = sim.gap();
+      state_.load_start_time = sim.time();
+      state_.plastic_at_load_start = sim.plastic_dissipation();
       break;
     }
     case Phase::hold:
@@ -204,9 +208,15 @@ void ScenarioRunner::after_step() {
     state_.gap_at_max_pressure = sim.gap();
   }
   switch (state_.phase) {
-    case Phase::settle:
-      if (sim.time() >= state_.phase_end_time) enter_phase(Phase::load);
+    case Phase::settle: {
+      // Settled: past the shortest time and slow enough (checked every 50 steps), or out of time.
+      const SettleSpec& settle = scenario_.settle;
+      const double max_time = settle.max_time > 0.0 ? settle.max_time : 3.0 * settle.time;
+      if (sim.time() < state_.phase_end_time || sim.step_count() % 50 != 0) break;
+      const double rms_speed = std::sqrt(2.0 * sim.kinetic_energy() / total_mass_);
+      if (rms_speed < settle.speed_tolerance || sim.time() >= max_time) enter_phase(Phase::load);
       break;
+    }
     case Phase::load: {
       const bool thick_reached = spec.target_thickness && sim.gap() <= *spec.target_thickness;
       const bool pressure_reached = spec.target_pressure && pressure >= *spec.target_pressure;
@@ -305,6 +315,8 @@ RunSummary ScenarioRunner::summary() const {
   summary.loaded_porosity = state_.loaded_porosity;
   summary.final_porosity = state_.final_porosity;
   summary.plastic_dissipation = sim.plastic_dissipation();
+  summary.plastic_dissipation_calendering =
+      state_.phase == Phase::settle ? 0.0 : summary.plastic_dissipation - state_.plastic_at_load_start;
   summary.narrow_phase_failures = sim.contact_counts().narrow_phase_failures;
   summary.finished = done();
   return summary;
@@ -322,6 +334,7 @@ std::string ScenarioRunner::write_summary() const {
       << "\nloaded_thickness_um = " << s.loaded_thickness << "\nfinal_thickness_um = " << s.final_thickness
       << "\nspringback_percent = " << s.springback_percent << "\nloaded_porosity = " << s.loaded_porosity
       << "\nfinal_porosity = " << s.final_porosity << "\nplastic_dissipation_pJ = " << s.plastic_dissipation
+      << "\nplastic_dissipation_calendering_pJ = " << s.plastic_dissipation_calendering
       << "\nnarrow_phase_failures = " << s.narrow_phase_failures << "\n";
   return path;
 }
@@ -330,7 +343,8 @@ double ScenarioRunner::progress() const noexcept {
   if (done()) return 1.0;
   const Simulation& sim = *simulation_;
   const CalenderingSpec& spec = scenario_.calendering;
-  const double settle = std::max(scenario_.settle.time, 0.0);
+  const double settle =
+      state_.phase == Phase::settle ? std::max(scenario_.settle.time, sim.time()) : state_.load_start_time;
   // Expected load travel: to the target thickness, or a third of the layer for a pressure target.
   const double start_gap = state_.phase == Phase::settle ? std::max(sim.highest_point(), 1e-9) : state_.load_start_gap;
   const double travel = spec.target_thickness ? std::max(start_gap - *spec.target_thickness, 1e-9) : start_gap / 3.0;

@@ -32,6 +32,7 @@ struct ProtocolState {
   Phase phase = Phase::settle;
   double phase_end_time = 0.0;        // settle and hold end at fixed times
   double load_start_gap = 0.0;
+  double load_start_time = 0.0;       // µs: how long the settling took
   double max_pressure = 0.0;          // top plate, MPa
   double gap_at_max_pressure = 0.0;
   double min_gap = 0.0;               // plate gap at the end of the hold (loaded thickness)
@@ -40,6 +41,7 @@ struct ProtocolState {
   double final_porosity = 0.0;
   double loaded_porosity = 0.0;
   std::uint64_t done_step = 0;
+  double plastic_at_load_start = 0.0;  // pJ dissipated while settling
 };
 
 struct RunSummary {
@@ -54,7 +56,8 @@ struct RunSummary {
   double springback_percent = 0.0; // 100 (final − loaded) / loaded
   double loaded_porosity = 0.0;
   double final_porosity = 0.0;
-  double plastic_dissipation = 0.0;  // pJ
+  double plastic_dissipation = 0.0;  // pJ, whole run
+  double plastic_dissipation_calendering = 0.0;  // pJ, from the start of the load
   std::uint64_t narrow_phase_failures = 0;
   bool finished = false;
 };
@@ -99,6 +102,7 @@ class ScenarioRunner {
   ProtocolState state_;
   double dt_estimate_ = 0.0;
   double solid_volume_ = 0.0;
+  double total_mass_ = 0.0;
   std::vector<std::string> warnings_;
   std::ofstream csv_;
 };
