@@ -107,16 +107,9 @@ void read_case_geometry(const std::string& case_path, BodySpec& body_i, BodySpec
                         std::vector<std::string>& warnings) {
   const toml::table root_table = parse_toml_file(case_path);
   TableReader root(root_table, "", case_path);
-  std::optional<Material> shared_material;
-  if (auto material = root.optional_table("material")) shared_material = read_material(*material);
-  {
-    auto body = root.table("body_I");
-    body_i = read_body(body, shared_material, warnings);
-  }
-  {
-    auto body = root.table("body_J");
-    body_j = read_body(body, shared_material, warnings);
-  }
+  auto pair = read_body_pair(root, warnings);
+  body_i = std::move(pair.body_i);
+  body_j = std::move(pair.body_j);
   (void)root.has("protocol");  // a full `ellc curve` case is fine; the protocol is not needed
   (void)root.has("model");
   root.finish();

@@ -86,6 +86,17 @@ ModelSpec read_model(TableReader& table) {
   return model;
 }
 
+BodyPair read_body_pair(TableReader& root, std::vector<std::string>& warnings) {
+  std::optional<Material> shared_material;
+  if (auto material = root.optional_table("material")) shared_material = read_material(*material);
+  BodyPair pair;
+  auto table_i = root.table("body_I");
+  pair.body_i = read_body(table_i, shared_material, warnings);
+  auto table_j = root.table("body_J");
+  pair.body_j = read_body(table_j, shared_material, warnings);
+  return pair;
+}
+
 ContactConstants case_contact_constants(const BodySpec& body_i, const BodySpec& body_j, HertzMode mode,
                                         const LawParameters& law) {
   const TipContact tip = tip_contact({body_i.semi_axes, body_i.twist}, {body_j.semi_axes, body_j.twist});
@@ -98,16 +109,9 @@ namespace {
 CurveCase read_case(const toml::table& root_table, const std::string& source) {
   TableReader root(root_table, "", source);
   CurveCase result;
-  std::optional<Material> shared_material;
-  if (auto material = root.optional_table("material")) shared_material = read_material(*material);
-  {
-    auto body = root.table("body_I");
-    result.body_i = read_body(body, shared_material, result.warnings);
-  }
-  {
-    auto body = root.table("body_J");
-    result.body_j = read_body(body, shared_material, result.warnings);
-  }
+  auto [body_i, body_j] = read_body_pair(root, result.warnings);
+  result.body_i = std::move(body_i);
+  result.body_j = std::move(body_j);
   {
     auto protocol = root.table("protocol");
     const auto absolute = protocol.optional_numbers("waypoints");

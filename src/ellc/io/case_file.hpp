@@ -44,6 +44,13 @@ struct CurveCase {
                                  std::vector<std::string>& warnings);
 [[nodiscard]] ModelSpec read_model(TableReader& table);
 
+// [material] (optional when each body has its own), [body_I] and [body_J] of a case's root table.
+struct BodyPair {
+  BodySpec body_i;
+  BodySpec body_j;
+};
+[[nodiscard]] BodyPair read_body_pair(TableReader& root, std::vector<std::string>& warnings);
+
 // Reads and validates a whole case; throws InputError on the first problem.
 [[nodiscard]] CurveCase read_curve_case(const std::string& path);
 [[nodiscard]] CurveCase parse_curve_case(std::string_view toml_text, const std::string& source);
