@@ -6,6 +6,7 @@ import numpy as np
 from .curves import law_forces
 from .data import load_run
 from .errors import force_errors
+from .fit import loading_points
 from .plotting import figure, save
 from .tables import markdown_table, pct
 
@@ -21,7 +22,11 @@ def protocol_results(constants: dict | None = None) -> dict:
         entry = {"run": run}
         for mode in ("hale", "exact"):
             law, source = law_forces(run.case, run.overlap, mode, constants=constants)
-            entry[mode] = {"force": law, "source": source, **force_errors(law, run.force)}
+            _, fe_f = loading_points(run.overlap, run.force)
+            _, law_f = loading_points(run.overlap, law)  # same mask: it depends on overlap only
+            loading = force_errors(law_f, fe_f)
+            entry[mode] = {"force": law, "source": source, **force_errors(law, run.force),
+                           "loading_mean": loading["mean_rel"], "loading_max": loading["max_rel"]}
         out[name] = entry
     return out
 
@@ -53,7 +58,8 @@ def plot_protocols(results: dict, suffix: str = "", constants: dict | None = Non
 
 def protocol_table(results: dict) -> list[str]:
     body = [[name, mode, e["source"], pct(e["mean_rel"]), pct(e["max_rel"]), pct(e["mean_of_peak"]),
-             pct(e["max_of_peak"])]
+             pct(e["max_of_peak"]), f"{pct(e['loading_mean'])} / {pct(e['loading_max'])}"]
             for name, entry in results.items() for mode in ("hale", "exact") if (e := entry[mode])]
     return markdown_table(["case", "Hertz", "source", "mean rel. error", "max rel. error",
-                           "mean of F_max", "max of F_max"], "lllrrrr", body)
+                           "mean of F_max", "max of F_max", "virgin loading only: mean / max rel."],
+                          "lllrrrrr", body)
