@@ -168,7 +168,7 @@ const RegisterCommand registration([](CLI::App& root) {
   CLI::App* command = root.add_subcommand("dem", "Generate and calender an ellipsoid packing with the built-in DEM");
   command->add_option("scenario", options->scenario_path, "Scenario file (TOML), e.g. examples/calendering.toml")
       ->required();
-  command->add_option("-o,--output", options->output_directory, "Output directory (overrides [output].directory)");
+  command->add_option("-o,--output,--output-dir", options->output_directory, "Output directory (overrides [output].directory)");
   command->add_option("-j,--threads", options->threads, "OpenMP threads (results do not depend on it)")
       ->check(CLI::PositiveNumber);
   command->add_option("--restart", options->restart_path, "Continue from a checkpoint written by this scenario");

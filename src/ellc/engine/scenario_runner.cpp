@@ -152,6 +152,11 @@ void ScenarioRunner::open_outputs(bool restarted) {
     truncate_csv(csv_path, simulation_->step_count());
     csv_.open(csv_path, std::ios::app);
   } else {
+    // A fresh run replaces the frames of an earlier run in the same directory (ours only).
+    for (const auto& entry : std::filesystem::directory_iterator(std::filesystem::path(directory_) / "vtk")) {
+      const std::string name = entry.path().filename().string();
+      if (name.rfind("particles_", 0) == 0 && entry.path().extension() == ".vtk") std::filesystem::remove(entry.path());
+    }
     csv_.open(csv_path, std::ios::trunc);
     csv_ << csv_header() << '\n';
   }
@@ -345,9 +350,12 @@ double ScenarioRunner::progress() const noexcept {
   const CalenderingSpec& spec = scenario_.calendering;
   const double settle =
       state_.phase == Phase::settle ? std::max(scenario_.settle.time, sim.time()) : state_.load_start_time;
-  // Expected load travel: to the target thickness, or a third of the layer for a pressure target.
+  // Expected load travel: to the target thickness, or for a pressure target to about random close
+  // packing (64 % solid).
   const double start_gap = state_.phase == Phase::settle ? std::max(sim.highest_point(), 1e-9) : state_.load_start_gap;
-  const double travel = spec.target_thickness ? std::max(start_gap - *spec.target_thickness, 1e-9) : start_gap / 3.0;
+  const double packed_gap = solid_volume_ / (0.64 * scenario_.box.lx * scenario_.box.ly);
+  const double travel = spec.target_thickness ? std::max(start_gap - *spec.target_thickness, 1e-9)
+                                              : std::max(start_gap - packed_gap, 0.1 * start_gap);
   const double load = travel / spec.speed;
   const double hold = spec.hold_time;
   const double unload = 0.15 * travel / spec.lift_speed;
