@@ -27,13 +27,7 @@ Simulation::Simulation(const EngineSettings& settings, ParticleSet particles, co
   normal_context_ = make_normal_context(settings_.contact);
   shear_modulus_ = effective_shear_modulus(settings_.contact.material);
   const std::size_t count = particles_.size();
-  is_sphere_.resize(count);
-  for (std::size_t slot = 0; slot < count; ++slot) {
-    const auto& axes = particles_.semi_axes[slot];
-    is_sphere_[slot] = axes.x() == axes.y() && axes.x() == axes.z();
-  }
-  omega_world_.assign(count, Eigen::Vector3d::Zero());
-  shapes_.assign(count, Ellipsoid(Eigen::Vector3d::Ones()));
+  prepare_derived_arrays();
   for (int wall = 0; wall < 2; ++wall) {
     wall_history_[wall].assign(count, ContactHistory{});
     wall_results_[wall].assign(count, WallResult{});
@@ -45,6 +39,17 @@ Simulation::Simulation(const EngineSettings& settings, ParticleSet particles, co
   rebuild_neighbours();
   refresh_body_frames();
   compute_forces();
+}
+
+void Simulation::prepare_derived_arrays() {
+  const std::size_t count = particles_.size();
+  is_sphere_.resize(count);
+  for (std::size_t slot = 0; slot < count; ++slot) {
+    const auto& axes = particles_.semi_axes[slot];
+    is_sphere_[slot] = axes.x() == axes.y() && axes.x() == axes.z();
+  }
+  omega_world_.assign(count, Eigen::Vector3d::Zero());
+  shapes_.assign(count, Ellipsoid(Eigen::Vector3d::Ones()));
 }
 
 void Simulation::set_wall_position(int wall, double position) { walls_[wall].position = position; }

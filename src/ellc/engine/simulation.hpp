@@ -103,6 +103,9 @@ class Simulation {
     bool failed = false;
   };
 
+  template <typename Io, typename Self>
+  static void state_fields(Io& io, Self& self);  // simulation_state.cpp
+  void prepare_derived_arrays();                 // sphere flags, body frames: from the particles
   void rebuild_neighbours();
   void refresh_body_frames() noexcept;
   void refresh_body_frame(std::size_t slot) noexcept;
