@@ -19,20 +19,28 @@ RunSummary calender(const std::string& text) {
   return runner.summary();
 }
 
+// Elastic reference: the same layer with plain Hertz. Plastic runs: NMC (Y = 7900 MPa, the example)
+// and a softer Y = 3000 MPa, where the plastic flattening of the contacts dominates the recovery.
 TEST(EngineCalendering, SpringbackPositiveAndSmallerThanElastic) {
   const std::string text = quick_scenario_text();
-  const RunSummary plastic = calender(text);
   const RunSummary elastic = calender(testing::replace_line(text, "normal =", "normal = \"hertz\""));
-  RecordProperty("springback_becker_kamlah_percent", std::to_string(plastic.springback_percent));
+  const RunSummary nmc = calender(text);
+  const RunSummary soft = calender(testing::replace_line(text, "yield_stress", "yield_stress = 3000.0"));
   RecordProperty("springback_hertz_percent", std::to_string(elastic.springback_percent));
-  EXPECT_GT(plastic.max_pressure, 200.0);  // the target pressure was reached
-  EXPECT_GT(plastic.springback_percent, 0.0);
-  EXPECT_LT(plastic.springback_percent, elastic.springback_percent);
-  EXPECT_GT(plastic.plastic_dissipation, 0.0);
+  RecordProperty("springback_nmc_percent", std::to_string(nmc.springback_percent));
+  RecordProperty("springback_y3000_percent", std::to_string(soft.springback_percent));
+  for (const RunSummary* run : {&elastic, &nmc, &soft}) {
+    EXPECT_GT(run->max_pressure, 200.0);  // the target pressure was reached
+    EXPECT_GT(run->final_thickness, run->loaded_thickness);
+    EXPECT_EQ(run->narrow_phase_failures, 0U);
+  }
+  EXPECT_GT(nmc.springback_percent, 0.0);
+  EXPECT_LT(nmc.springback_percent, elastic.springback_percent);
+  EXPECT_GT(soft.springback_percent, 0.0);
+  EXPECT_LT(soft.springback_percent, 0.8 * elastic.springback_percent);
   EXPECT_EQ(elastic.plastic_dissipation, 0.0);
-  EXPECT_LT(plastic.final_porosity, plastic.loaded_porosity + 1.0);
-  EXPECT_GT(plastic.final_thickness, plastic.loaded_thickness);
-  EXPECT_EQ(plastic.narrow_phase_failures, 0U);
+  EXPECT_GT(nmc.plastic_dissipation, 0.0);
+  EXPECT_GT(soft.plastic_dissipation, nmc.plastic_dissipation);
 }
 
 }  // namespace

@@ -29,6 +29,10 @@ struct CalenderingSpec {
   double hold_time = 10.0;  // µs
   double gravity = 0.0;     // µm/µs² during calendering
   double start_gap = 0.0;   // µm between the highest particle and the plate when it starts
+  // Unloading ends when the plate has lost contact: no particle touches it, or its pressure is
+  // below this fraction of the maximum (particles set flying by the release, with no gravity to
+  // bring them back, would otherwise keep touching the rising plate now and then).
+  double release_fraction = 1e-3;
 };
 
 struct OutputSpec {

@@ -113,6 +113,8 @@ void read_calendering(TableReader& table, CalenderingSpec& spec) {
   spec.hold_time = non_negative_or(table, "hold_time", spec.hold_time);
   spec.gravity = non_negative_or(table, "gravity", spec.gravity);
   spec.start_gap = non_negative_or(table, "start_gap", spec.start_gap);
+  spec.release_fraction = non_negative_or(table, "release_fraction", spec.release_fraction);
+  if (spec.release_fraction >= 1.0) table.fail("release_fraction", spec.release_fraction, "a fraction in [0, 1)");
   table.finish();
 }
 

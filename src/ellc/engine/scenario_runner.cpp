@@ -237,7 +237,8 @@ void ScenarioRunner::after_step() {
       if (sim.time() >= state_.phase_end_time) enter_phase(Phase::unload);
       break;
     case Phase::unload:
-      if (sim.wall_contact_count(kTopWall) == 0) enter_phase(Phase::done);
+      if (sim.wall_contact_count(kTopWall) == 0 || pressure <= spec.release_fraction * state_.max_pressure)
+        enter_phase(Phase::done);
       break;
     case Phase::done: break;
   }
