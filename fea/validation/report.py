@@ -71,7 +71,7 @@ def main() -> int:
             if len(sel) < 3:
                 continue
             fits[f"{label}: paper (eq. 53)"] = cal.paper_rms(sel)
-            if len(sel) >= 6:  # fewer cases leave the decay rates undetermined
+            if len(sel) >= 8:  # fewer cases leave the decay rates undetermined
                 fits[f"{label}: ours, o and t fitted"] = cal.constants_fit(sel)
             fits[f"{label}: ours, o and t kept at the paper's"] = cal.constants_fit(sel, paper_rates=True)
         ours = cal.recommended_constants(rows)
