@@ -119,6 +119,15 @@ def dem_command(args):
         if rows:
             left.plot([columns["thickness"][k] for k in rows], [columns["plate_pressure"][k] for k in rows],
                       ".-", ms=2, lw=1.2, color=colour, label=phase)
+    # Zoom on the calendering proper: where the plate pressure exceeds 1 % of its maximum (the
+    # compaction of the loose deposit before it is a long flat tail).
+    pressure = columns["plate_pressure"]
+    peak = max(pressure) if pressure else 0.0
+    pressed = [t for t, p in zip(columns["thickness"], pressure) if p > 0.01 * peak]
+    if pressed:
+        low, high = min(pressed), max(pressed)
+        margin = 0.15 * (high - low) + 1e-9
+        left.set_xlim(low - margin, high + margin)
     left.set_xlabel("layer thickness (plate gap) [um]")
     left.set_ylabel("plate pressure [MPa]")
     left.set_ylim(bottom=0)

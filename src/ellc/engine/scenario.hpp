@@ -22,7 +22,11 @@ struct SettleSpec {
 };
 
 struct CalenderingSpec {
-  double speed = 0.1;       // µm/µs, top plate moving down
+  double speed = 0.1;       // µm/µs, top plate moving down once it presses the layer
+  // The plate first compacts the loose deposit at approach_speed, until its pressure reaches
+  // approach_pressure; then it calenders at `speed` (0 → no approach: `speed` throughout).
+  double approach_speed = 0.0;     // µm/µs
+  double approach_pressure = 5.0;  // MPa
   double lift_speed = 0.1;  // µm/µs, top plate moving up
   std::optional<double> target_thickness;  // µm (plate gap)
   std::optional<double> target_pressure;   // MPa on the top plate

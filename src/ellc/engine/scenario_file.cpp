@@ -104,6 +104,8 @@ void read_settle(TableReader& table, SettleSpec& settle) {
 void read_calendering(TableReader& table, CalenderingSpec& spec) {
   spec.speed = table.positive("speed");
   spec.lift_speed = positive_or(table, "lift_speed", spec.speed);
+  spec.approach_speed = non_negative_or(table, "approach_speed", 0.0);
+  spec.approach_pressure = positive_or(table, "approach_pressure", spec.approach_pressure);
   if (table.has("target_thickness")) spec.target_thickness = table.number("target_thickness");
   if (table.has("target_pressure")) spec.target_pressure = table.positive("target_pressure");
   if (!spec.target_thickness && !spec.target_pressure)

@@ -177,8 +177,10 @@ void ScenarioRunner::enter_phase(Phase phase) {
       sim.settings().gravity = Eigen::Vector3d(0.0, 0.0, -spec.gravity);
       sim.settings().drag_rate = 0.0;
       sim.set_wall_position(kTopWall, sim.highest_point() + spec.start_gap);
-      sim.set_wall_velocity(kTopWall, -spec.speed);
+      state_.approaching = spec.approach_speed > 0.0;
+      sim.set_wall_velocity(kTopWall, -(state_.approaching ? spec.approach_speed : spec.speed));
       state_.load_start_gap = sim.gap();
+      state_.press_start_gap = sim.gap();
       state_.load_start_time = sim.time();
       state_.plastic_at_load_start = sim.plastic_dissipation();
       break;
@@ -223,6 +225,11 @@ void ScenarioRunner::after_step() {
       break;
     }
     case Phase::load: {
+      if (state_.approaching && pressure >= spec.approach_pressure) {
+        state_.approaching = false;
+        state_.press_start_gap = sim.gap();
+        sim.set_wall_velocity(kTopWall, -spec.speed);
+      }
       const bool thick_reached = spec.target_thickness && sim.gap() <= *spec.target_thickness;
       const bool pressure_reached = spec.target_pressure && pressure >= *spec.target_pressure;
       if (thick_reached || pressure_reached) {
@@ -357,7 +364,9 @@ double ScenarioRunner::progress() const noexcept {
   const double packed_gap = solid_volume_ / (0.64 * scenario_.box.lx * scenario_.box.ly);
   const double travel = spec.target_thickness ? std::max(start_gap - *spec.target_thickness, 1e-9)
                                               : std::max(start_gap - packed_gap, 0.1 * start_gap);
-  const double load = travel / spec.speed;
+  // With an approach, all but the last ~6 % of the travel go at approach_speed.
+  const double load = spec.approach_speed > 0.0 ? 0.94 * travel / spec.approach_speed + 0.06 * travel / spec.speed
+                                                : travel / spec.speed;
   const double hold = spec.hold_time;
   const double unload = 0.15 * travel / spec.lift_speed;
   const double total = settle + load + hold + unload;

@@ -33,6 +33,8 @@ struct ProtocolState {
   double phase_end_time = 0.0;        // settle and hold end at fixed times
   double load_start_gap = 0.0;
   double load_start_time = 0.0;       // µs: how long the settling took
+  bool approaching = false;           // the plate still compacts the loose deposit (approach_speed)
+  double press_start_gap = 0.0;       // plate gap when the approach ended
   double max_pressure = 0.0;          // top plate, MPa
   double gap_at_max_pressure = 0.0;
   double min_gap = 0.0;               // plate gap at the end of the hold (loaded thickness)
