@@ -19,6 +19,26 @@ namespace {
 
 constexpr std::uint64_t kCheckpointTag = 0x454c4c43'434b5031ULL;  // "ELLCCKP1"
 
+// The protocol state field by field (no padding bytes in the file: equal runs, equal files).
+template <typename Io, typename State>
+void protocol_fields(Io&& io, State& state) {
+  io(state.phase);
+  io(state.phase_end_time);
+  io(state.load_start_gap);
+  io(state.load_start_time);
+  io(state.approaching);
+  io(state.press_start_gap);
+  io(state.max_pressure);
+  io(state.gap_at_max_pressure);
+  io(state.min_gap);
+  io(state.pressure_end_of_hold);
+  io(state.final_gap);
+  io(state.final_porosity);
+  io(state.loaded_porosity);
+  io(state.done_step);
+  io(state.plastic_at_load_start);
+}
+
 std::string frame_path(const std::string& directory, std::uint64_t step) {
   char name[64];
   std::snprintf(name, sizeof name, "particles_%09llu.vtk", static_cast<unsigned long long>(step));
@@ -99,7 +119,7 @@ ScenarioRunner::ScenarioRunner(Scenario scenario, RunOptions options)
       throw InputError(options_.restart_path, "--restart", options_.restart_path,
                        "a checkpoint written by this same scenario file (" + scenario_.source +
                            " has changed since, or is another scenario)");
-    binary::get(in, state_);
+    protocol_fields([&in](auto& value) { binary::get(in, value); }, state_);
     binary::get(in, dt_estimate_);
     settings.dt = 1.0;  // overwritten by the stored state
     simulation_ = std::make_unique<Simulation>(settings, ParticleSet{}, std::array<Wall, 2>{});
@@ -304,7 +324,7 @@ void ScenarioRunner::write_checkpoint(const std::string& path) const {
     if (!out) throw std::runtime_error("cannot open " + temporary + " for writing");
     binary::put(out, kCheckpointTag);
     binary::put(out, scenario_hash(scenario_.text));
-    binary::put(out, state_);
+    protocol_fields([&out](const auto& value) { binary::put(out, value); }, state_);
     binary::put(out, dt_estimate_);
     simulation_->write_state(out);
     if (!out) throw std::runtime_error("writing " + temporary + " failed");
