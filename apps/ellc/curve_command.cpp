@@ -57,11 +57,8 @@ void write_csv(std::ostream& out, const std::vector<double>& path, const Contact
     const LawResult& result = results[index];
     const double previous_max = index == 0 ? 0.0 : results[index - 1].max_overlap;
     const ContactPatch patch = contact_patch(constants, path[index], previous_max);
-    const double plastic_overlap = result.max_overlap > constants.yield_overlap
-                                       ? unloading_branch(constants, result.max_overlap).plastic_overlap
-                                       : 0.0;
     out << path[index] << ',' << result.force << ',' << regime_name(result.regime) << ',' << result.max_overlap << ','
-        << plastic_overlap << ',' << patch.semi_axis_major << ',' << patch.semi_axis_minor << ','
+        << plastic_overlap(constants, result.max_overlap) << ',' << patch.semi_axis_major << ',' << patch.semi_axis_minor << ','
         << (patch.semi_axis_major > 0.0 ? patch.peak_pressure() : 0.0) << ','
         << path[index] / constants.yield_overlap << ',' << result.force / constants.yield_force << ','
         << spheres[index].force / constants.yield_force << ','
@@ -89,10 +86,8 @@ void print_summary(std::FILE* out, const CurveCase& curve_case, const ContactCon
     const bool turns = index + 1 == path.size() || path[index + 1] >= path[index];
     if (!decreasing || !turns) continue;
     const double max_overlap = results[index].max_overlap;
-    const double plastic_overlap =
-        max_overlap > c.yield_overlap ? unloading_branch(c, max_overlap).plastic_overlap : 0.0;
     std::fprintf(out, "  unloading %d: delta_* = %.6g µm -> delta_p = %.6g µm (eq. 34)\n", ++unloading_count,
-                 max_overlap, plastic_overlap);
+                 max_overlap, plastic_overlap(c, max_overlap));
   }
 }
 

@@ -40,11 +40,6 @@ struct PatchArrays {
   py::array peak_pressure;
 };
 
-// δ_p of the unloading branch for history δ_* (0 when the contact never yielded), as `ellc curve` writes it.
-double plastic_overlap_of(const ContactConstants& c, double max_overlap) {
-  return max_overlap > c.yield_overlap ? unloading_branch(c, max_overlap).plastic_overlap : 0.0;
-}
-
 PathResult evaluate_path_arrays(const Contact& contact, const py::handle& overlaps_in, double initial_max_overlap) {
   const DoubleArray overlaps = vector_argument(overlaps_in, "overlaps");
   const py::ssize_t size = overlaps.size();
@@ -63,7 +58,7 @@ PathResult evaluate_path_arrays(const Contact& contact, const py::handle& overla
     for (std::size_t index = 0; index < results.size(); ++index) {
       force_out[index] = results[index].force;
       max_out[index] = results[index].max_overlap;
-      plastic_out[index] = plastic_overlap_of(contact.constants, results[index].max_overlap);
+      plastic_out[index] = plastic_overlap(contact.constants, results[index].max_overlap);
       regime_out[index] = static_cast<std::uint8_t>(results[index].regime);
     }
   }

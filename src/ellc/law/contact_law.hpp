@@ -102,6 +102,11 @@ struct LoadingPoint {
   return branch;
 }
 
+// δ_p for any history δ_*: the permanent overlap of eq. (34), 0 when the contact never yielded.
+[[nodiscard]] inline double plastic_overlap(const ContactConstants& c, double max_overlap) noexcept {
+  return max_overlap > c.yield_overlap ? unloading_branch(c, max_overlap).plastic_overlap : 0.0;
+}
+
 // The law. `max_overlap` is δ_* before this step (0 for a fresh contact). The caller stores the
 // returned max_overlap; deleting history on separation is the caller's policy (model-notes §5).
 [[nodiscard]] inline LawResult evaluate_contact(const ContactConstants& c, double overlap,
