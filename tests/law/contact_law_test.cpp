@@ -94,6 +94,35 @@ TEST(Law, UnloadingStartsAtTheHistoryPointAndEndsAtThePlasticOverlap) {
   }
 }
 
+// Paper case 2's protocol (δ_* = 10 % and 13 % of r̂^{I,J} = 20 µm), against the notes
+// evaluated independently: a separate numpy script written from model-notes §1–4 (Hale factors,
+// eq. 44, 34, 46 with denominator F_*,pY, 48, 49), not calling this library. Units µm, MPa, µN.
+// These are the δ_p that docs/validation.md compares with the FE (Sec. 2).
+TEST(Law, PaperCase2UnloadingMatchesAnIndependentEvaluationOfTheNotes) {
+  const auto c = paper_case2();
+  EXPECT_NEAR(c.equivalent_radius / 5.223735474555465, 1.0, 1e-12);
+  EXPECT_NEAR(c.yield_overlap / 0.3545960495391769, 1.0, 1e-12);
+  EXPECT_NEAR(c.yield_force / 48899.050614736065, 1.0, 1e-12);
+  const struct {
+    double max_overlap, plastic_radius, plastic_overlap, unloading_radius, loading_force, overlap, force;
+  } expected[] = {
+      {2.0, 8.790107702836337, 0.811451315239311, 21.81966862582169, 613279.628255928, 1.0, 38749.69922897366},
+      {2.6, 9.879068170777373, 1.2252031062990956, 26.53679612093645, 841377.8154682171, 1.3, 10677.229720322326},
+      {2.6, 9.879068170777373, 1.2252031062990956, 26.53679612093645, 841377.8154682171, 2.0, 355971.35348028166},
+  };
+  for (const auto& e : expected) {
+    const UnloadingBranch branch = unloading_branch(c, e.max_overlap);
+    EXPECT_NEAR(branch.plastic_radius / e.plastic_radius, 1.0, 1e-12);
+    EXPECT_NEAR(branch.plastic_overlap / e.plastic_overlap, 1.0, 1e-12);
+    EXPECT_NEAR(plastic_overlap(c, e.max_overlap) / e.plastic_overlap, 1.0, 1e-12);
+    EXPECT_NEAR(branch.unloading_radius / e.unloading_radius, 1.0, 1e-12);
+    EXPECT_NEAR(branch.loading_force / e.loading_force, 1.0, 1e-12);
+    const LawResult result = evaluate_contact(c, e.overlap, e.max_overlap);
+    EXPECT_EQ(result.regime, Regime::unloading);
+    EXPECT_NEAR(result.force / e.force, 1.0, 1e-11) << e.max_overlap << " " << e.overlap;
+  }
+}
+
 TEST(Law, NeverYieldedContactsUnloadAlongHertz) {
   const auto c = paper_case2();
   const double max_overlap = 0.9 * c.yield_overlap;
