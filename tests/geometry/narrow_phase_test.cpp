@@ -188,6 +188,42 @@ TEST(NarrowPhase, SeparatedPairsGiveASeparatingAxis) {
   }
 }
 
+// overlap_along(n) is g(n), whose minimum over n is the common-normal overlap: it equals the
+// solved overlap along the solved normal, is not below it along nearby axes, and sees J only
+// through the offset given (a periodic image of J is J shifted).
+TEST(NarrowPhase, OverlapAlongAnAxisIsBoundedByTheCommonNormal) {
+  Rng rng(16);
+  for (int sample = 0; sample < 1000; ++sample) {
+    const Pair pair = random_pair(rng, test::uniform(rng, -0.3, 0.3));
+    const NarrowPhaseResult result = ellipsoid_contact(pair.i, pair.j);
+    ASSERT_NE(result.status, NarrowPhaseStatus::failed);
+    const Eigen::Vector3d offset = pair.j.center() - pair.i.center();
+    const double scale = pair.i.bounding_radius() + pair.j.bounding_radius();
+    EXPECT_NEAR(overlap_along(pair.i, pair.j, offset, result.geometry.normal), result.geometry.overlap, 1e-12 * scale);
+    if (result.status == NarrowPhaseStatus::contact) {  // the common normal is a (local) minimum of g
+      for (int axis = 0; axis < 20; ++axis) {
+        const Eigen::Vector3d n = (result.geometry.normal + 0.02 * test::random_unit(rng)).normalized();
+        EXPECT_GE(overlap_along(pair.i, pair.j, offset, n), result.geometry.overlap - 1e-12 * scale);
+      }
+    }
+    const Eigen::Vector3d shift(37.0, -11.0, 0.0);  // J moved away by a box period: only the offset counts
+    const Ellipsoid image(pair.j.semi_axes(), {pair.j.center() + shift, pair.j.pose().orientation});
+    EXPECT_NEAR(overlap_along(pair.i, pair.j, offset + shift, result.geometry.normal),
+                overlap_along(pair.i, image, offset + shift, result.geometry.normal), 1e-12 * scale);
+  }
+}
+
+// cos 2α is carried beside α so that eq. (5) needs no cos; both must describe the same angle.
+TEST(NarrowPhase, CosTwoAlphaMatchesAlpha) {
+  Rng rng(17);
+  for (int sample = 0; sample < 1000; ++sample) {
+    const Pair pair = random_pair(rng, test::uniform(rng, 0.01, 0.3));
+    const NarrowPhaseResult result = ellipsoid_contact(pair.i, pair.j);
+    if (result.status != NarrowPhaseStatus::contact) continue;
+    EXPECT_NEAR(result.geometry.cos_two_alpha, std::cos(2.0 * result.geometry.alpha), 1e-14);
+  }
+}
+
 TEST(NarrowPhase, DegenerateInputIsReportedNotComputed) {
   const Ellipsoid good(Eigen::Vector3d(1, 2, 3));
   const Ellipsoid bad(Eigen::Vector3d(1, 0, 3));

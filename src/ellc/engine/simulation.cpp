@@ -50,6 +50,24 @@ void Simulation::prepare_derived_arrays() {
   }
   omega_world_.assign(count, Eigen::Vector3d::Zero());
   shapes_.assign(count, Ellipsoid(Eigen::Vector3d::Ones()));
+  index_pairs_by_particle();
+}
+
+void Simulation::index_pairs_by_particle() {
+  const std::size_t count = particles_.size();
+  pairs_of_particle_start_.assign(count + 1, 0);
+  for (const PairSlot& pair : pairs_) {
+    ++pairs_of_particle_start_[pair.i + 1];
+    ++pairs_of_particle_start_[pair.j + 1];
+  }
+  for (std::size_t slot = 0; slot < count; ++slot) pairs_of_particle_start_[slot + 1] += pairs_of_particle_start_[slot];
+  pairs_of_particle_.resize(2 * pairs_.size());
+  std::vector<std::uint32_t> fill(pairs_of_particle_start_.begin(), pairs_of_particle_start_.end() - 1);
+  for (std::size_t index = 0; index < pairs_.size(); ++index) {
+    const auto entry = static_cast<std::uint32_t>(2 * index);
+    pairs_of_particle_[fill[pairs_[index].i]++] = entry;
+    pairs_of_particle_[fill[pairs_[index].j]++] = entry + 1;
+  }
 }
 
 void Simulation::set_wall_position(int wall, double position) { walls_[wall].position = position; }
@@ -64,6 +82,7 @@ void Simulation::rebuild_neighbours() {
   released_work_ += carry_over_history(pairs_, next);
   pairs_ = std::move(next);
   pair_results_.assign(pairs_.size(), PairResult{});
+  index_pairs_by_particle();
   reference_position_ = particles_.position;
   ++rebuilds_;
 }
@@ -233,7 +252,11 @@ void Simulation::evaluate_pair(std::size_t index, const ResponseParameters& para
     return;
   }
   if (solution.status == PairStatus::separated) {
-    if (history.active) result.released_work = clear_history(history);
+    if (history.active) {  // the contact ends; its separating axis warm-starts the next test
+      const WarmStart axis = history.warm_start;
+      result.released_work = clear_history(history);
+      history.warm_start = axis;
+    }
     return;
   }
   history.active = true;
@@ -257,9 +280,12 @@ void Simulation::evaluate_pair(std::size_t index, const ResponseParameters& para
   result.torque_j = lever_j.cross(on_j);
 }
 
-// Serial, in the fixed order of the pair list: the only place where contributions meet.
+// Where contributions meet. Each particle adds its pair forces to its wall forces in pair-list
+// order, the order a serial sweep over the list would use, so the sums are the same bits for any
+// thread count. Scalar totals: fixed chunks of the list, each summed in order, then in order.
 void Simulation::accumulate() {
   auto& p = particles_;
+  const std::size_t count = p.size();
   for (auto& wall : walls_) wall.force.setZero();
   for (int w = 0; w < 2; ++w) {
     const auto& results = wall_results_[w];
@@ -269,17 +295,41 @@ void Simulation::accumulate() {
       failures_ += results[slot].failed ? 1U : 0U;
     }
   }
-  for (std::size_t index = 0; index < pairs_.size(); ++index) {
-    const PairResult& result = pair_results_[index];
-    released_work_ += result.released_work;
-    failures_ += result.failed ? 1U : 0U;
-    if (!result.contact) continue;
-    const PairSlot& pair = pairs_[index];
-    p.force[pair.i] -= result.force_on_j;
-    p.force[pair.j] += result.force_on_j;
-    p.torque[pair.i] += result.torque_i;
-    p.torque[pair.j] += result.torque_j;
+  const bool parallel = count > settings_.parallel_threshold;
+#pragma omp parallel for schedule(static) if (parallel)
+  for (std::size_t slot = 0; slot < count; ++slot) {
+    Eigen::Vector3d force = p.force[slot];
+    Eigen::Vector3d torque = p.torque[slot];
+    for (std::uint32_t k = pairs_of_particle_start_[slot]; k < pairs_of_particle_start_[slot + 1]; ++k) {
+      const std::uint32_t entry = pairs_of_particle_[k];
+      const PairResult& result = pair_results_[entry >> 1U];
+      if (!result.contact) continue;
+      if ((entry & 1U) == 0U) {
+        force -= result.force_on_j;
+        torque += result.torque_i;
+      } else {
+        force += result.force_on_j;
+        torque += result.torque_j;
+      }
+    }
+    p.force[slot] = force;
+    p.torque[slot] = torque;
   }
+  constexpr std::size_t kChunk = 4096;
+  const std::size_t chunks = (pairs_.size() + kChunk - 1) / kChunk;
+  chunk_released_work_.assign(chunks, 0.0);
+  std::uint64_t failures = 0;
+#pragma omp parallel for schedule(static) reduction(+ : failures) if (parallel)
+  for (std::size_t chunk = 0; chunk < chunks; ++chunk) {
+    double released = 0.0;
+    for (std::size_t index = chunk * kChunk; index < std::min(pairs_.size(), (chunk + 1) * kChunk); ++index) {
+      released += pair_results_[index].released_work;
+      failures += pair_results_[index].failed ? 1U : 0U;
+    }
+    chunk_released_work_[chunk] = released;
+  }
+  for (double released : chunk_released_work_) released_work_ += released;
+  failures_ += failures;
 }
 
 void Simulation::report_runaway(std::size_t first_bad) const {

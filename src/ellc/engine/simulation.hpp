@@ -4,8 +4,9 @@
 // force response (contact_force.hpp) live apart; this class only orders them.
 //
 // Determinism: every contact is evaluated independently (in parallel) into its own slot of a
-// result array; forces are then summed per particle in the fixed order of the sorted pair list.
-// The results therefore do not depend on the number of threads, bit for bit.
+// result array; each particle then gathers its forces (in parallel) in the fixed order of the
+// sorted pair list, and scalar totals are summed over fixed chunks of that list. The results
+// therefore do not depend on the number of threads, bit for bit.
 
 #include <array>
 #include <cstdint>
@@ -105,7 +106,8 @@ class Simulation {
 
   template <typename Io, typename Self>
   static void state_fields(Io& io, Self& self);  // simulation_state.cpp
-  void prepare_derived_arrays();                 // sphere flags, body frames: from the particles
+  void prepare_derived_arrays();                 // sphere flags, body frames, pair index: from the state
+  void index_pairs_by_particle();
   void rebuild_neighbours();
   void refresh_body_frames() noexcept;
   void refresh_body_frame(std::size_t slot) noexcept;
@@ -130,6 +132,10 @@ class Simulation {
   std::vector<Eigen::Vector3d> reference_position_;  // at the last neighbour-list build
   std::vector<PairSlot> pairs_;
   std::vector<PairResult> pair_results_;
+  // The pairs of each particle in pair-list order (CSR): entry = 2 × pair index + (particle is j).
+  std::vector<std::uint32_t> pairs_of_particle_start_;
+  std::vector<std::uint32_t> pairs_of_particle_;
+  std::vector<double> chunk_released_work_;
   std::array<std::vector<ContactHistory>, 2> wall_history_;  // per particle slot
   std::array<std::vector<WallResult>, 2> wall_results_;
   double skin_ = 0.0;

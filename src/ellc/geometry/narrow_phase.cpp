@@ -227,11 +227,16 @@ void mark_solved(const Ellipsoid& body_i, const Ellipsoid& body_j, const AlongNo
   const Lanes w22 = forms.q22 * at.reach;
   geometry.curvature_i = curvature_from_shape_operator(w11[0], w12[0], w22[0], frame, at.normal);
   geometry.curvature_j = curvature_from_shape_operator(w11[1], w12[1], w22[1], frame, -at.normal);
-  geometry.alpha = pair_principal_directions(geometry.curvature_i, geometry.curvature_j, at.normal);
+  pair_principal_directions(geometry, at.normal);
   store_warm_start(at.normal, result.warm_start);
 }
 
 }  // namespace
+
+double overlap_along(const Ellipsoid& body_i, const Ellipsoid& body_j, const Eigen::Vector3d& centre_offset,
+                     const Eigen::Vector3d& unit_axis) noexcept {
+  return body_i.support_radius(unit_axis) + body_j.support_radius(unit_axis) - unit_axis.dot(centre_offset);
+}
 
 NarrowPhaseResult ellipsoid_contact(const Ellipsoid& body_i, const Ellipsoid& body_j,
                                     const NarrowPhaseWarmStart* warm) noexcept {

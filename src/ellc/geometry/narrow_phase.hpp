@@ -64,4 +64,11 @@ struct NarrowPhaseResult {
 [[nodiscard]] NarrowPhaseResult ellipsoid_contact(const Ellipsoid& body_i, const Ellipsoid& body_j,
                                                   const NarrowPhaseWarmStart* warm = nullptr) noexcept;
 
+// g(n) above for one unit axis n, with J's centre at c_I + `centre_offset` (a periodic image of J
+// may sit elsewhere than body_j.center(); only J's shape S_J is used). g < 0 proves that n is a
+// separating axis: the bodies are apart. The cheap test a caller holding last step's separating
+// axis (the warm start of a separated pair) runs before paying for ellipsoid_contact().
+[[nodiscard]] double overlap_along(const Ellipsoid& body_i, const Ellipsoid& body_j,
+                                   const Eigen::Vector3d& centre_offset, const Eigen::Vector3d& unit_axis) noexcept;
+
 }  // namespace ellc

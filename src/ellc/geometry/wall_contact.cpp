@@ -24,7 +24,7 @@ NarrowPhaseResult wall_contact(const Ellipsoid& body, const Plane& wall) noexcep
   result.status = NarrowPhaseStatus::contact;
   geometry.curvature_i = body.curvature_with_normal(into_wall);
   geometry.curvature_j = SurfaceCurvature{0.0, 0.0, geometry.curvature_i.direction_1, -geometry.curvature_i.direction_2};
-  geometry.alpha = pair_principal_directions(geometry.curvature_i, geometry.curvature_j, into_wall);
+  pair_principal_directions(geometry, into_wall);
   return result;
 }
 

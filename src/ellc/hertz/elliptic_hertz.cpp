@@ -69,13 +69,20 @@ double solve_axis_ratio_sq(double ratio) noexcept {
   return std::exp(0.5 * (t_low + t_high));
 }
 
+// x^y for x ≥ 0, y > 0 (0 at x = 0): one exp and one log, a third of the cost of std::pow.
+double positive_power(double x, double y) noexcept { return x > 0.0 ? std::exp(y * std::log(x)) : 0.0; }
+
 HertzShape hale_shape(double equivalent_radius, double ratio) noexcept {
-  // Eq. (4) and (7) as corrected in model-notes §1, with B/A ≥ 1.
+  // Eq. (4) and (7) as corrected in model-notes §1, with B/A ≥ 1:
+  //   e² = 1 − (A/B)^{4/3},  f1 = 1 − ((B/A)^0.0602 − 1)^1.456,  f2 = 1 − ((B/A)^0.0684 − 1)^1.531.
+  // Every power of B/A shares one logarithm (a DEM evaluates this per contact and step), and
+  // expm1 keeps (B/A)^p − 1 exact near B/A = 1 where it is tiny.
+  const double log_ratio = std::log(ratio);
   HertzShape shape;
   shape.equivalent_radius = equivalent_radius;
-  shape.eccentricity_sq = 1.0 - std::pow(1.0 / ratio, 4.0 / 3.0);
-  shape.f1 = 1.0 - std::pow(std::pow(ratio, 0.0602) - 1.0, 1.456);
-  shape.f2 = 1.0 - std::pow(std::pow(ratio, 0.0684) - 1.0, 1.531);
+  shape.eccentricity_sq = -std::expm1(-(4.0 / 3.0) * log_ratio);
+  shape.f1 = 1.0 - positive_power(std::expm1(0.0602 * log_ratio), 1.456);
+  shape.f2 = 1.0 - positive_power(std::expm1(0.0684 * log_ratio), 1.531);
   return shape;
 }
 
@@ -96,11 +103,16 @@ HertzShape exact_shape(double equivalent_radius, double ratio) noexcept {
 }  // namespace
 
 RelativeCurvature relative_curvature(PrincipalCurvatures body_i, PrincipalCurvatures body_j, double alpha) noexcept {
+  return relative_curvature_from_cos(body_i, body_j, std::cos(2.0 * alpha));
+}
+
+RelativeCurvature relative_curvature_from_cos(PrincipalCurvatures body_i, PrincipalCurvatures body_j,
+                                              double cos_two_alpha) noexcept {
   const double sum = 0.5 * (body_i.kappa_1 + body_i.kappa_2 + body_j.kappa_1 + body_j.kappa_2);
   const double split_i = body_i.kappa_1 - body_i.kappa_2;
   const double split_j = body_j.kappa_1 - body_j.kappa_2;
   // The radicand is |Δ_I e^{2iα} + Δ_J|² ≥ 0 mathematically; clamp rounding below zero.
-  const double radicand = split_i * split_i + split_j * split_j + 2.0 * split_i * split_j * std::cos(2.0 * alpha);
+  const double radicand = split_i * split_i + split_j * split_j + 2.0 * split_i * split_j * cos_two_alpha;
   const double difference = 0.5 * std::sqrt(std::max(radicand, 0.0));
   return {0.5 * (sum - difference), 0.5 * (sum + difference)};
 }
