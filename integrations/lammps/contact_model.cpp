@@ -4,6 +4,8 @@
 #include <cmath>
 
 #include "ellc/geometry/normal_contact.hpp"
+#include "ellc/response/normal_damping.hpp"
+#include "ellc/response/tangential_spring.hpp"
 
 namespace ellc_lammps {
 
@@ -80,38 +82,26 @@ PairResult evaluate_pair(const PosedBody& posed_a, const PosedBody& posed_b, con
   result.law = normal.law;
   history[HistoryLayout::max_overlap] = normal.law.max_overlap;
 
-  // Damping and friction scale with the Hertz tangent stiffness k_n = dF_H/dδ.
+  // Damping and friction scale with the Hertz tangent stiffness k_n = dF_H/dδ; k_t = ratio × k_n.
+  // This parametrisation is LAMMPS's; the algorithms are src/ellc/response's, shared with the engine.
   const double effective_mass = a.mass * b.mass / (a.mass + b.mass);
   const double normal_stiffness = 1.5 * normal.constants.hertz_coefficient * std::sqrt(geometry.overlap);
   const Eigen::Vector3d relative_velocity = point_velocity(b, body_b, geometry.point) - point_velocity(a, body_a, geometry.point);
   const double normal_speed = relative_velocity.dot(n);  // > 0 when separating
-  const double normal_damping = 2.0 * coefficients.normal_damping * std::sqrt(effective_mass * normal_stiffness);
-  result.normal_force = std::max(normal.law.force - normal_damping * normal_speed, 0.0);
+  result.normal_force = ellc::damped_normal_force(
+      normal.law.force, ellc::viscous_damping(coefficients.normal_damping, effective_mass, normal_stiffness),
+      normal_speed);
 
   // Tangential: spring ξ (displacement of b relative to a), kept in the current tangent plane.
-  Eigen::Vector3d force_on_b = result.normal_force * n;
-  Eigen::Map<Eigen::Vector3d> spring(history + HistoryLayout::spring);
   const double tangential_stiffness = coefficients.tangential_stiffness * normal_stiffness;
-  if (coefficients.friction > 0.0 && tangential_stiffness > 0.0) {
-    const double length = spring.norm();
-    spring -= spring.dot(n) * n;
-    const double projected = spring.norm();
-    if (projected > 0.0) spring *= length / projected;
-    const Eigen::Vector3d tangential_velocity = relative_velocity - normal_speed * n;
-    spring += tangential_velocity * timestep;
-    const double tangential_damping =
-        2.0 * coefficients.tangential_damping * std::sqrt(effective_mass * tangential_stiffness);
-    Eigen::Vector3d tangential = -tangential_stiffness * spring - tangential_damping * tangential_velocity;
-    const double limit = coefficients.friction * result.normal_force;
-    const double magnitude = tangential.norm();
-    if (magnitude > limit) {  // sliding: cap at the Coulomb limit and pull the spring back to it
-      tangential *= magnitude > 0.0 ? limit / magnitude : 0.0;
-      spring = -(tangential + tangential_damping * tangential_velocity) / tangential_stiffness;
-    }
-    force_on_b += tangential;
-  } else {
-    spring.setZero();
-  }
+  const double tangential_damping =
+      ellc::viscous_damping(coefficients.tangential_damping, effective_mass, tangential_stiffness);
+  const ellc::TangentialCoefficients tangential{tangential_stiffness, tangential_damping, coefficients.friction};
+  Eigen::Map<Eigen::Vector3d> spring(history + HistoryLayout::spring);
+  const ellc::TangentialResponse friction =
+      ellc::tangential_response(spring, n, relative_velocity, timestep, result.normal_force, tangential);
+  spring = friction.spring;
+  const Eigen::Vector3d force_on_b = result.normal_force * n + friction.force;
 
   result.force_on_b = force_on_b;
   result.torque_on_a = (geometry.point - body_a.center()).cross(-force_on_b);

@@ -1,7 +1,8 @@
 #pragma once
 // The per-pair physics of pair ellipsoid/bk, free of LAMMPS types so it can be unit-tested:
 // narrow phase (the project's geometry layer) → Becker–Kamlah normal force (the project's law,
-// unchanged) + normal damping + tangential Coulomb friction with a history spring.
+// unchanged) + normal damping + tangential Coulomb friction with a history spring (both the
+// project's src/ellc/response, shared with the DEM engine; only the stiffnesses are chosen here).
 //
 // Canonical orientation: body "a" is the atom with the lower ID, body "b" the higher; the normal
 // points from a to b and the history is stored in that frame. The result is therefore the same

@@ -3,41 +3,30 @@
 #include <algorithm>
 #include <cmath>
 
+#include "ellc/response/normal_damping.hpp"
+#include "ellc/response/tangential_spring.hpp"
+
 namespace ellc::engine {
 
 Eigen::Vector3d contact_response(const ContactKinematics& kinematics, const ContactConstants& constants,
                                  double overlap, double law_force, const ResponseParameters& parameters,
                                  ContactHistory& history) noexcept {
   const Eigen::Vector3d& n = kinematics.normal;
+  // The engine's parametrisation; the damping and friction algorithms are src/ellc/response's.
   const double contact_radius = std::sqrt(constants.contact_radius_sq_per_overlap * std::max(overlap, 0.0));
   const double normal_speed = kinematics.relative_velocity.dot(n);  // > 0 when separating
   const double normal_stiffness = 2.0 * constants.effective_modulus * contact_radius;
-  const double normal_damping = 2.0 * parameters.damping_ratio * std::sqrt(kinematics.effective_mass * normal_stiffness);
-  const double normal_force = std::max(0.0, law_force - normal_damping * normal_speed);
+  const double normal_force = damped_normal_force(
+      law_force, viscous_damping(parameters.damping_ratio, kinematics.effective_mass, normal_stiffness), normal_speed);
 
-  // Tangential history spring, carried onto the current tangent plane with its length kept.
-  const Eigen::Vector3d tangential_velocity = kinematics.relative_velocity - normal_speed * n;
-  Eigen::Vector3d& spring = history.tangential_spring;
-  const double spring_length = spring.norm();
-  if (spring_length > 0.0) {
-    spring -= spring.dot(n) * n;
-    const double projected = spring.norm();
-    spring *= projected > 0.0 ? spring_length / projected : 0.0;
-  }
-  spring += tangential_velocity * parameters.dt;
-  const double tangential_stiffness = 8.0 * parameters.shear_modulus * contact_radius;
-  const double tangential_damping =
-      2.0 * parameters.damping_ratio * std::sqrt(kinematics.effective_mass * tangential_stiffness);
-  Eigen::Vector3d tangential = -tangential_stiffness * spring - tangential_damping * tangential_velocity;
-  const double limit = parameters.friction * normal_force;
-  const double magnitude = tangential.norm();
-  if (magnitude > limit) {
-    tangential *= magnitude > 0.0 ? limit / magnitude : 0.0;
-    spring = tangential_stiffness > 0.0
-                 ? Eigen::Vector3d(-(tangential + tangential_damping * tangential_velocity) / tangential_stiffness)
-                 : Eigen::Vector3d::Zero();
-  }
-  return normal_force * n + tangential;
+  const double tangential_stiffness = 8.0 * parameters.shear_modulus * contact_radius;  // Mindlin
+  const TangentialCoefficients tangential{
+      tangential_stiffness, viscous_damping(parameters.damping_ratio, kinematics.effective_mass, tangential_stiffness),
+      parameters.friction};
+  const TangentialResponse friction = tangential_response(history.tangential_spring, n, kinematics.relative_velocity,
+                                                          parameters.dt, normal_force, tangential);
+  history.tangential_spring = friction.spring;
+  return normal_force * n + friction.force;
 }
 
 double recoverable_energy(const ContactConstants& constants, double overlap, double max_overlap) noexcept {

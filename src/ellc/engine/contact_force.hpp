@@ -7,6 +7,8 @@
 //  * Tangential: ξ += v_t dt on the current tangent plane (rotated, magnitude kept),
 //    F_t = −k_t ξ − c_t v_t, k_t = 8 G_e c_c (Mindlin), c_t = 2 ζ sqrt(m* k_t),
 //    |F_t| ≤ µ F_n; when sliding, ξ is reset to −(F_t + c_t v_t)/k_t.
+//  * Only the stiffnesses are chosen here: the damped normal force and the tangential spring
+//    are src/ellc/response/ (normal_damping.hpp, tangential_spring.hpp), shared with LAMMPS.
 //  * F_law is the Becker–Kamlah force from evaluate_contact(), used unchanged.
 //  * Energy: plastic_work() of δ_* per contact (dissipated for good), recoverable_energy() of
 //    (δ, δ_*) for what is stored elastically.
