@@ -7,6 +7,7 @@
 #include "ellc/engine/packing.hpp"
 #include "ellc/engine/random.hpp"
 #include "ellc/engine/time_step.hpp"
+#include "ellc/geometry/narrow_phase.hpp"
 #include "ellc/law/contact_constants.hpp"
 #include "engine_support.hpp"
 
@@ -102,6 +103,41 @@ TEST(EngineDynamics, RestitutionMatchesThornton1997) {
     RecordProperty("restitution_at_" + std::to_string(static_cast<int>(multiple)) + "_vy", std::to_string(restitution));
     EXPECT_NEAR(restitution, expected, 0.015 * expected) << "v/v_y = " << multiple;
   }
+}
+
+// A sphere and an ellipsoid approaching head-on: the pair is tested while apart (so it holds a
+// separating axis) and must register the contact in the step the bodies first overlap. Guards the
+// separating-axis shortcut against using anything but the true shapes of both bodies.
+TEST(EngineDynamics, SphereMeetsEllipsoidWhenTheyFirstOverlap) {
+  EngineSettings settings = free_settings(NormalModel::hertz);
+  const double speed = 0.5;  // µm/µs
+  ParticleSet particles;
+  particles.add(0, Eigen::Vector3d::Constant(3.0), kScaledDensity, Eigen::Vector3d(50.0, 50.0, 50.0),
+                Eigen::Quaterniond::Identity());
+  const Eigen::Quaterniond tilt(Eigen::AngleAxisd(0.3, Eigen::Vector3d(0.0, 1.0, 1.0).normalized()));
+  particles.add(1, Eigen::Vector3d(4.0, 2.0, 2.5), kScaledDensity, Eigen::Vector3d(58.0, 50.5, 50.0), tilt);
+  particles.velocity[1] = Eigen::Vector3d(-speed, 0.0, 0.0);
+  settings.dt = stable_time_step(particles, kScaledDensity, kNmc);
+  settings.box = {100.0, 100.0};
+  Simulation sim(settings, particles, {Wall{0.0, 0.0, 1, {}}, Wall{100.0, 0.0, -1, {}}});
+  const auto true_overlap = [&] {
+    const ParticleSet& p = sim.particles();
+    const Ellipsoid a(p.semi_axes[0], Pose{p.position[0], p.orientation[0]});
+    const Ellipsoid b(p.semi_axes[1], Pose{p.position[1], p.orientation[1]});
+    const NarrowPhaseResult found = ellipsoid_contact(a, b);
+    return found.status == NarrowPhaseStatus::contact ? found.geometry.overlap : 0.0;
+  };
+  int apart_steps = 0;
+  for (int step = 0; step < static_cast<int>(4.0 / speed / settings.dt); ++step) {
+    sim.step();
+    if (sim.contact_counts().particle_contacts > 0) break;
+    ++apart_steps;
+    ASSERT_EQ(true_overlap(), 0.0) << "overlapping bodies reported apart at step " << step;
+  }
+  EXPECT_GT(apart_steps, 10);  // the pair was evaluated (and held a separating axis) while apart
+  EXPECT_EQ(sim.contact_counts().particle_contacts, 1U);
+  EXPECT_GT(true_overlap(), 0.0);
+  EXPECT_LT(true_overlap(), 2.0 * speed * settings.dt);  // caught in its first step of overlap
 }
 
 // Ellipsoids with friction and damping in a periodic box, no walls reached, no gravity: the total

@@ -243,8 +243,12 @@ void Simulation::evaluate_pair(std::size_t index, const ResponseParameters& para
   const double reach = p.bounding_radius[i] + p.bounding_radius[j];
   PairSolution solution;
   if ((centre_j - p.position[i]).squaredNorm() < reach * reach) {
-    const BodyRef body_i{p.semi_axes[i], p.position[i], p.orientation[i], p.mean_radius[i], &shapes_[i]};
-    const BodyRef body_j{p.semi_axes[j], centre_j, p.orientation[j], p.mean_radius[j], &shapes_[j]};
+    // shapes_ holds posed ellipsoids for non-spheres only (a sphere meeting an ellipsoid is
+    // posed on demand by the adapter, and never takes the separating-axis shortcut).
+    const BodyRef body_i{p.semi_axes[i], p.position[i], p.orientation[i], p.mean_radius[i],
+                         is_sphere_[i] == 0 ? &shapes_[i] : nullptr};
+    const BodyRef body_j{p.semi_axes[j], centre_j, p.orientation[j], p.mean_radius[j],
+                         is_sphere_[j] == 0 ? &shapes_[j] : nullptr};
     solution = solve_pair(body_i, body_j, is_sphere_[i] != 0 && is_sphere_[j] != 0, history, normal_context_);
   }
   if (solution.status == PairStatus::failed) {

@@ -48,9 +48,6 @@ Eigen::Vector3d Ellipsoid::surface_point_with_normal(const Eigen::Vector3d& worl
   return support_point(world_normal);  // scale-free: S n / sqrt(nᵀ S n) does not depend on |n|
 }
 
-double Ellipsoid::support_radius(const Eigen::Vector3d& unit_direction) const noexcept {
-  return std::sqrt(unit_direction.dot(inverse_shape_ * unit_direction));
-}
 
 SurfaceCurvature curvature_from_shape_operator(double w11, double w12, double w22,
                                                const geometry_detail::TangentFrame& frame,

@@ -82,7 +82,9 @@ class Ellipsoid {
   // The point of the body farthest along `direction` (any length > 0): the same point.
   [[nodiscard]] Eigen::Vector3d support_point(const Eigen::Vector3d& direction) const noexcept;
   // h(n) − n·c = sqrt(nᵀ S n) for a unit n: how far the body reaches from its centre along n.
-  [[nodiscard]] double support_radius(const Eigen::Vector3d& unit_direction) const noexcept;
+  [[nodiscard]] double support_radius(const Eigen::Vector3d& unit_direction) const noexcept {
+    return std::sqrt(unit_direction.dot(inverse_shape_ * unit_direction));
+  }
 
   // Principal curvatures and directions at a surface point. The point is first pulled radially
   // onto the surface, so points a rounding error off the surface are fine. Shape operator of the

@@ -233,11 +233,6 @@ void mark_solved(const Ellipsoid& body_i, const Ellipsoid& body_j, const AlongNo
 
 }  // namespace
 
-double overlap_along(const Ellipsoid& body_i, const Ellipsoid& body_j, const Eigen::Vector3d& centre_offset,
-                     const Eigen::Vector3d& unit_axis) noexcept {
-  return body_i.support_radius(unit_axis) + body_j.support_radius(unit_axis) - unit_axis.dot(centre_offset);
-}
-
 NarrowPhaseResult ellipsoid_contact(const Ellipsoid& body_i, const Ellipsoid& body_j,
                                     const NarrowPhaseWarmStart* warm) noexcept {
   NarrowPhaseResult result;  // status failed until proven otherwise

@@ -68,7 +68,11 @@ struct NarrowPhaseResult {
 // may sit elsewhere than body_j.center(); only J's shape S_J is used). g < 0 proves that n is a
 // separating axis: the bodies are apart. The cheap test a caller holding last step's separating
 // axis (the warm start of a separated pair) runs before paying for ellipsoid_contact().
-[[nodiscard]] double overlap_along(const Ellipsoid& body_i, const Ellipsoid& body_j,
-                                   const Eigen::Vector3d& centre_offset, const Eigen::Vector3d& unit_axis) noexcept;
+// (Inline: the engine calls it for every near-miss pair of every step.)
+[[nodiscard]] inline double overlap_along(const Ellipsoid& body_i, const Ellipsoid& body_j,
+                                          const Eigen::Vector3d& centre_offset,
+                                          const Eigen::Vector3d& unit_axis) noexcept {
+  return body_i.support_radius(unit_axis) + body_j.support_radius(unit_axis) - unit_axis.dot(centre_offset);
+}
 
 }  // namespace ellc
