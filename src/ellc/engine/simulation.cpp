@@ -193,6 +193,7 @@ void Simulation::evaluate_walls_and_reset(std::size_t slot) {
     WallResult& result = wall_results_[w][slot];
     result = WallResult{};
     const double reach = p.bounding_radius[slot] - wall.side * (p.position[slot].z() - wall.position);
+    if (reach <= 0.0 && !history.active) continue;  // far from this wall (most particles): nothing to do
     PairSolution solution;
     if (reach > 0.0) {
       const BodyRef body{p.semi_axes[slot], p.position[slot], p.orientation[slot], p.mean_radius[slot], shape};
