@@ -8,6 +8,8 @@ REPO = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__)
 FEA = os.path.join(REPO, "fea")
 sys.path.insert(0, FEA)
 
+from validation.curves import ellc_binary  # noqa: E402  (needs fea/ on the path)
+
 
 def have_fe_tools() -> bool:
     try:
@@ -28,3 +30,13 @@ def needs_fe_tools():
 @pytest.fixture
 def repo():
     return REPO
+
+
+@pytest.fixture(scope="module")
+def cli():
+    """The `ellc` CLI (ELLC_BIN, else build*/apps/ellc/ellc); skips the test without it."""
+    binary = ellc_binary()
+    if binary is None:
+        print("SKIP: ellc CLI not built (set ELLC_BIN=/path/to/ellc)")
+        pytest.skip("ellc CLI not built (set ELLC_BIN=/path/to/ellc)")
+    return binary

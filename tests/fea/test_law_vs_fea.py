@@ -14,7 +14,7 @@ the law can represent; they are held to a looser, stated bound so that regressio
 import pytest
 
 from validation.calibration_report import HERTZ_CONSISTENT, grid_runs, pre_yield_deviation
-from validation.curves import ellc_binary, law_forces
+from validation.curves import law_forces
 from validation.data import complete_runs
 from validation.errors import force_errors
 from validation.fit import loading_points
@@ -22,15 +22,6 @@ from validation.fit import loading_points
 LOADING_MEAN, LOADING_MAX = 0.05, 0.12
 PROTOCOL_MEAN = 0.08
 OUTSIDE_MEAN, OUTSIDE_MAX = 0.25, 0.40  # cases with HERTZ_CONSISTENT violated below delta_Y
-
-
-@pytest.fixture(scope="module")
-def cli():
-    binary = ellc_binary()
-    if binary is None:
-        print("SKIP: ellc CLI not built (set ELLC_BIN=/path/to/ellc)")
-        pytest.skip("ellc CLI not built (set ELLC_BIN=/path/to/ellc)")
-    return binary
 
 
 GRID = [r.name for r in grid_runs()]

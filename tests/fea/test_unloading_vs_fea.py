@@ -23,7 +23,7 @@ import tempfile
 import numpy as np
 import pytest
 
-from validation.curves import REPO, ellc_binary, law_forces
+from validation.curves import REPO, law_forces
 from validation.data import load_run
 
 #            measured (Hale): loading mean rel | below delta_*: mean rel, max of peak | |delta_p error|/delta_*
@@ -34,15 +34,6 @@ BOUNDS = {
                         delta_p=0.055),  # 1.04 % | 3.5 %, 4.6 % | 0.017, 0.045
 }
 FLOOR = 0.1  # of the peak FE force, for relative errors
-
-
-@pytest.fixture(scope="module")
-def cli():
-    binary = ellc_binary()
-    if binary is None:
-        print("SKIP: ellc CLI not built (set ELLC_BIN=/path/to/ellc)")
-        pytest.skip("ellc CLI not built (set ELLC_BIN=/path/to/ellc)")
-    return binary
 
 
 def _run(name):
