@@ -21,8 +21,11 @@ RunSummary calender(const std::string& text) {
 
 // Elastic reference: the same layer with plain Hertz. Plastic runs: NMC (Y = 7900 MPa, the example)
 // and a softer Y = 3000 MPa, where the plastic flattening of the contacts dominates the recovery.
+// Pressed to 400 MPa rather than the example's 200: at 200 MPa NMC barely yields, and its
+// springback (5.63 %) sits within the run-to-run scatter of the elastic one (5.72 %); at 400 MPa
+// it is 8.4 % against 9.2 % (Y = 3000: 4.5 %).
 TEST(EngineCalendering, SpringbackPositiveAndSmallerThanElastic) {
-  const std::string text = quick_scenario_text();
+  const std::string text = testing::replace_line(quick_scenario_text(), "target_pressure", "target_pressure = 400.0");
   const RunSummary elastic = calender(testing::replace_line(text, "normal =", "normal = \"hertz\""));
   const RunSummary nmc = calender(text);
   const RunSummary soft = calender(testing::replace_line(text, "yield_stress", "yield_stress = 3000.0"));
@@ -30,7 +33,7 @@ TEST(EngineCalendering, SpringbackPositiveAndSmallerThanElastic) {
   RecordProperty("springback_nmc_percent", std::to_string(nmc.springback_percent));
   RecordProperty("springback_y3000_percent", std::to_string(soft.springback_percent));
   for (const RunSummary* run : {&elastic, &nmc, &soft}) {
-    EXPECT_GT(run->max_pressure, 200.0);  // the target pressure was reached
+    EXPECT_GT(run->max_pressure, 400.0 * 0.99);  // the target pressure was reached
     EXPECT_GT(run->final_thickness, run->loaded_thickness);
     EXPECT_EQ(run->narrow_phase_failures, 0U);
   }
