@@ -6,8 +6,8 @@
 // pressed by the top wall to 60 % solid in about 1500 steps and held for 300: a confined packing
 // with several contacts per particle. The sphere run starts from the same positions (spheres of
 // the same volume) after 100 untimed steps. ELLC_BENCH_DEM_PARTICLES overrides N = 10^4,
-// ELLC_BENCH_DEM_STEPS the 300 timed steps (fewer make the figure noisy: a neighbour-list rebuild
-// costs several steps, and there are about 9 in 200 steps).
+// ELLC_BENCH_DEM_STEPS the 300 timed steps (with fewer, the figure depends more on how many
+// neighbour-list rebuilds, about one per 20 steps, fall into the window).
 
 #include <benchmark/benchmark.h>
 
