@@ -5,6 +5,11 @@
 
 #include "ellc/engine/broad_phase.hpp"
 #include "ellc/engine/contact_force.hpp"
+#include "ellc/engine/random.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
 
 namespace ellc::engine {
 namespace {
@@ -58,6 +63,52 @@ TEST(EnginePairMap, DroppedActiveContactReleasesItsWork) {
   EXPECT_GT(work, 0.0);
   std::vector<PairSlot> none;
   EXPECT_EQ(carry_over_history(before, none), work);
+}
+
+// The cell list finds exactly the pairs a brute-force search over all pairs (minimum image in x
+// and y) finds, sorted by key as the history merge needs, and the same list with or without
+// threads. Ids are shuffled against the slots so that key order and slot order differ.
+TEST(EnginePairMap, CellListEqualsBruteForceSortedByKey) {
+  const Box box{40.0, 30.0};
+  Random random(21);
+  ParticleSet particles;
+  std::vector<std::uint32_t> ids(400);
+  for (std::uint32_t k = 0; k < ids.size(); ++k) ids[k] = 3 * k + 7;
+  for (std::size_t k = ids.size() - 1; k > 0; --k)  // Fisher–Yates
+    std::swap(ids[k], ids[static_cast<std::size_t>(random.uniform() * static_cast<double>(k + 1))]);
+  for (std::uint32_t id : ids) {
+    const Eigen::Vector3d axes(random.uniform(0.5, 2.0), random.uniform(0.5, 2.0), random.uniform(0.5, 2.0));
+    const Eigen::Vector3d centre(random.uniform(0.0, box.lx), random.uniform(0.0, box.ly), random.uniform(0.0, 25.0));
+    particles.add(id, axes, 1.0, centre, random.rotation());
+  }
+  const double skin = 0.3;
+  const auto serial = find_candidate_pairs(particles, box, skin, false);
+  const auto threaded = find_candidate_pairs(particles, box, skin, true);
+  std::vector<PairKey> expected;
+  const auto image = [](double d, double length) { return d - length * std::round(d / length); };
+  for (std::size_t a = 0; a < particles.size(); ++a)
+    for (std::size_t b = a + 1; b < particles.size(); ++b) {
+      const Eigen::Vector3d raw = particles.position[b] - particles.position[a];
+      const Eigen::Vector3d d(image(raw.x(), box.lx), image(raw.y(), box.ly), raw.z());
+      const double reach = particles.bounding_radius[a] + particles.bounding_radius[b] + skin;
+      if (d.squaredNorm() < reach * reach)
+        expected.push_back(pair_key(std::min(particles.id[a], particles.id[b]), std::max(particles.id[a], particles.id[b])));
+    }
+  std::sort(expected.begin(), expected.end());
+  ASSERT_GT(expected.size(), 100U);
+  ASSERT_EQ(serial.size(), expected.size());
+  ASSERT_EQ(threaded.size(), expected.size());
+  for (std::size_t k = 0; k < expected.size(); ++k) {
+    EXPECT_EQ(serial[k].key, expected[k]);
+    EXPECT_EQ(threaded[k].key, expected[k]);
+    EXPECT_EQ(threaded[k].i, serial[k].i);
+    EXPECT_EQ(threaded[k].j, serial[k].j);
+    EXPECT_EQ(threaded[k].shift, serial[k].shift);
+    EXPECT_LT(particles.id[serial[k].i], particles.id[serial[k].j]);  // i is the smaller id
+    const Eigen::Vector3d seen = particles.position[serial[k].j] + serial[k].shift - particles.position[serial[k].i];
+    EXPECT_LE(std::abs(seen.x()), 0.5 * box.lx);  // the shift gives the nearest image
+    EXPECT_LE(std::abs(seen.y()), 0.5 * box.ly);
+  }
 }
 
 }  // namespace

@@ -15,6 +15,10 @@ namespace ellc::engine {
 // that the minimum image is the only image in range (checked by the scenario reader).
 [[nodiscard]] std::vector<PairSlot> find_candidate_pairs(const ParticleSet& particles, const Box& box, double skin,
                                                        bool parallel = true);
+// The same into `pairs` (cleared first), reusing its storage: the engine keeps a spare list so
+// that a rebuild does not allocate (and page-fault in) a fresh one of ~250 bytes per pair.
+void find_candidate_pairs(const ParticleSet& particles, const Box& box, double skin, bool parallel,
+                          std::vector<PairSlot>& pairs);
 
 // Moves the histories of `previous` into `next` where the keys match (both sorted by key).
 // Returns the plastic work of active contacts that dropped out of the list (released as

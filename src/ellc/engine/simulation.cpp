@@ -78,9 +78,9 @@ ResponseParameters Simulation::response_parameters(double friction) const noexce
 
 void Simulation::rebuild_neighbours() {
   wrap_positions(particles_, settings_.box);
-  std::vector<PairSlot> next = find_candidate_pairs(particles_, settings_.box, skin_, particles_.size() > settings_.parallel_threshold);
-  released_work_ += carry_over_history(pairs_, next);
-  pairs_ = std::move(next);
+  find_candidate_pairs(particles_, settings_.box, skin_, particles_.size() > settings_.parallel_threshold, spare_pairs_);
+  released_work_ += carry_over_history(pairs_, spare_pairs_);
+  std::swap(pairs_, spare_pairs_);  // the old list's storage serves the next rebuild
   pair_results_.assign(pairs_.size(), PairResult{});
   index_pairs_by_particle();
   reference_position_ = particles_.position;

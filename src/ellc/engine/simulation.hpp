@@ -131,6 +131,7 @@ class Simulation {
   std::vector<Ellipsoid> shapes_;  // posed ellipsoids of this step (non-spheres only)
   std::vector<Eigen::Vector3d> reference_position_;  // at the last neighbour-list build
   std::vector<PairSlot> pairs_;
+  std::vector<PairSlot> spare_pairs_;  // storage for the next rebuild's list (no state)
   std::vector<PairResult> pair_results_;
   // The pairs of each particle in pair-list order (CSR): entry = 2 × pair index + (particle is j).
   std::vector<std::uint32_t> pairs_of_particle_start_;
