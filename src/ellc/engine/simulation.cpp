@@ -11,6 +11,25 @@ namespace ellc::engine {
 
 namespace {
 
+// The neighbour-list skin when the settings leave it at 0. 0.2 mean bounding radii halved the
+// rebuilds of the bench_dem packing against 0.1 (10 → 5 in 300 steps, for 13 % more candidate
+// pairs, each one distance test per step) and ran 6–12 % faster. Never so wide that the box stops
+// holding 2 (2 R_max + skin), which the broad phase's minimum image needs, and never below the
+// former 0.1 that the scenario reader's box check (`box.size`) guarantees room for. Only the cost
+// and the rounding depend on it (a pair kept longer in the list keeps its warm start).
+double default_skin(const ParticleSet& particles, const Box& box) noexcept {
+  if (particles.size() == 0) return 0.0;
+  double mean_bounding = 0.0;
+  double largest = 0.0;
+  for (double radius : particles.bounding_radius) {
+    mean_bounding += radius;
+    largest = std::max(largest, radius);
+  }
+  mean_bounding /= static_cast<double>(particles.size());
+  const double room = 0.5 * std::min(box.lx, box.ly) - 2.0 * largest;
+  return std::max(0.1 * mean_bounding, std::min(0.2 * mean_bounding, room));
+}
+
 double shear_modulus_of(const Material& material) noexcept {
   return material.youngs_modulus / (2.0 * (1.0 + material.poisson_ratio));
 }
@@ -32,10 +51,7 @@ Simulation::Simulation(const EngineSettings& settings, ParticleSet particles, co
     wall_history_[wall].assign(count, ContactHistory{});
     wall_results_[wall].assign(count, WallResult{});
   }
-  double mean_bounding = 0.0;
-  for (double radius : particles_.bounding_radius) mean_bounding += radius;
-  mean_bounding /= static_cast<double>(std::max<std::size_t>(count, 1));
-  skin_ = settings_.skin > 0.0 ? settings_.skin : 0.1 * mean_bounding;
+  skin_ = settings_.skin > 0.0 ? settings_.skin : default_skin(particles_, settings_.box);
   rebuild_neighbours();
   refresh_body_frames();
   compute_forces();
