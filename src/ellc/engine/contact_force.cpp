@@ -63,9 +63,11 @@ double clear_history(ContactHistory& history) noexcept {
   const double released = plastic_work(history.constants, history.max_overlap);
   const bool keep_constants = history.constants_cached;
   const ContactConstants constants = history.constants;
+  const WarmStart axis = history.warm_start;
   history = ContactHistory{};
   history.constants_cached = keep_constants;  // sphere pairs: the constants do not change
   history.constants = constants;
+  history.warm_start = axis;  // the separating axis just found warm-starts the next test
   return released;
 }
 

@@ -49,6 +49,8 @@ struct ContactKinematics {
 [[nodiscard]] double plastic_work(const ContactConstants& constants, double max_overlap) noexcept;
 
 // Clears a history on separation; returns its plastic work, which the caller books as dissipated.
+// Keeps what is not contact history: cached sphere constants and the narrow-phase warm start
+// (the separating axis, tested first next step).
 double clear_history(ContactHistory& history) noexcept;
 
 }  // namespace ellc::engine

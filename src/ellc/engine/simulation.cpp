@@ -273,11 +273,7 @@ void Simulation::evaluate_pair(std::size_t index, const ResponseParameters& para
     return;
   }
   if (solution.status == PairStatus::separated) {
-    if (history.active) {  // the contact ends; its separating axis warm-starts the next test
-      const WarmStart axis = history.warm_start;
-      result.released_work = clear_history(history);
-      history.warm_start = axis;
-    }
+    if (history.active) result.released_work = clear_history(history);
     return;
   }
   history.active = true;
