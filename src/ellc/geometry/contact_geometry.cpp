@@ -19,29 +19,26 @@ void adopt_directions(SurfaceCurvature& side, const SurfaceCurvature& partner, c
 
 }  // namespace
 
-PrincipalAngle pair_principal_directions(SurfaceCurvature& side_i, SurfaceCurvature& side_j,
-                                         const Eigen::Vector3d& normal) noexcept {
+void pair_principal_directions(ContactGeometry& geometry, const Eigen::Vector3d& normal) noexcept {
+  SurfaceCurvature& side_i = geometry.curvature_i;
+  SurfaceCurvature& side_j = geometry.curvature_j;
+  geometry.alpha = 0.0;
+  geometry.cos_two_alpha = 1.0;
   if (side_i.umbilic()) {
     adopt_directions(side_i, side_j, normal);
-    return {};
+    return;
   }
   if (side_j.umbilic()) {
     adopt_directions(side_j, side_i, -normal);
-    return {};
+    return;
   }
   const double cosine = std::abs(side_i.direction_1.dot(side_j.direction_1));
   const double sine = side_i.direction_1.cross(side_j.direction_1).norm();
+  if (cosine == 0.0 && sine == 0.0) return;  // degenerate directions: α = 0
   // cos 2α = (cos² − sin²)/(cos² + sin²): the division absorbs the rounding of |d1| = 1.
-  const double cos_two_alpha = (cosine - sine) * (cosine + sine) / (cosine * cosine + sine * sine);
+  geometry.cos_two_alpha = (cosine - sine) * (cosine + sine) / (cosine * cosine + sine * sine);
   // atan2(sine, cosine) for sine, cosine ≥ 0, via atan on a ratio ≤ 1 (cheaper than atan2).
-  if (sine <= cosine) return {cosine > 0.0 ? std::atan(sine / cosine) : 0.0, cosine > 0.0 ? cos_two_alpha : 1.0};
-  return {0.5 * std::numbers::pi - std::atan(cosine / sine), cos_two_alpha};
-}
-
-void pair_principal_directions(ContactGeometry& geometry, const Eigen::Vector3d& normal) noexcept {
-  const PrincipalAngle angle = pair_principal_directions(geometry.curvature_i, geometry.curvature_j, normal);
-  geometry.alpha = angle.alpha;
-  geometry.cos_two_alpha = angle.cos_two_alpha;
+  geometry.alpha = sine <= cosine ? std::atan(sine / cosine) : 0.5 * std::numbers::pi - std::atan(cosine / sine);
 }
 
 }  // namespace ellc

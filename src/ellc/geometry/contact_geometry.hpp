@@ -21,21 +21,13 @@ struct ContactGeometry {
   double cos_two_alpha = 1.0;    // cos 2α, the form eq. (5) uses (computed without a cos)
 };
 
-struct PrincipalAngle {
-  double alpha = 0.0;          // α ∈ [0, π/2]
-  double cos_two_alpha = 1.0;  // cos 2α
-};
-
 // The angle α ∈ [0, π/2] between the κ1 directions (principal directions are lines, so α and
 // π − α are the same; eq. (5) only sees cos 2α). Umbilic handling: where a side is umbilic
 // (κ1 = κ2, e.g. a spheroid tip, a sphere, a wall) every tangent direction is principal, so that
 // side takes the other side's directions (projected on its own tangent plane) and α = 0. Eq. (5)
 // weights α by κ1 − κ2 of each side, so this choice changes A and B by nothing, and α never
 // jumps with the rounding noise of a tangent frame. `normal` is the outward normal of side I.
-[[nodiscard]] PrincipalAngle pair_principal_directions(SurfaceCurvature& side_i, SurfaceCurvature& side_j,
-                                                       const Eigen::Vector3d& normal) noexcept;
-
-// Sets geometry.alpha and geometry.cos_two_alpha from its two curvatures (pair_principal_directions).
+// Sets geometry.alpha and geometry.cos_two_alpha (and may turn an umbilic side's directions).
 void pair_principal_directions(ContactGeometry& geometry, const Eigen::Vector3d& normal) noexcept;
 
 }  // namespace ellc
