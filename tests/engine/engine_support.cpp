@@ -4,6 +4,8 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "ellc/engine/random.hpp"
+
 namespace ellc::engine::testing {
 
 EngineSettings free_settings(NormalModel model) {
@@ -16,6 +18,22 @@ EngineSettings free_settings(NormalModel model) {
   settings.box = {200.0, 200.0};
   settings.max_speed = 1e6;
   return settings;
+}
+
+ParticleSet colliding_packing(std::size_t count, std::uint64_t seed, double insertion_fraction, double floor,
+                              std::uint64_t velocity_seed) {
+  PackingSpec spec;
+  spec.count = count;
+  spec.mean_radius = 4.0;
+  spec.radius_spread = 0.1;
+  spec.seed = seed;
+  spec.density = kScaledDensity;
+  spec.insertion_fraction = insertion_fraction;
+  ParticleSet particles = generate_packing(spec, kCollidingBox, floor, ellipsoid_overlap_test());
+  Random random(velocity_seed);
+  for (auto& velocity : particles.velocity)
+    velocity = Eigen::Vector3d(random.uniform(-1, 1), random.uniform(-1, 1), random.uniform(-1, 1));
+  return particles;
 }
 
 std::string quick_scenario_text() {

@@ -3,6 +3,7 @@
 
 #include <string>
 
+#include "ellc/engine/packing.hpp"
 #include "ellc/engine/scenario.hpp"
 #include "ellc/engine/scenario_runner.hpp"
 #include "ellc/engine/simulation.hpp"
@@ -14,6 +15,13 @@ inline constexpr double kScaledDensity = 4.7e-3 * 1000.0;  // ng/µm³
 
 // Settings for a few free bodies: no damping, no friction, no gravity, far walls.
 [[nodiscard]] EngineSettings free_settings(NormalModel model);
+
+// A loose packing of `count` ellipsoids (r̂ = 4 µm ± 10 %, aspects 1:[0.5..2]:[0.5..2], density
+// kScaledDensity) in the 42 µm × 42 µm box kCollidingBox, inserted above `floor` at the given
+// solid fraction, each with a random velocity in [−1, 1]³ µm/µs: bodies that collide often.
+inline constexpr Box kCollidingBox{42.0, 42.0};
+[[nodiscard]] ParticleSet colliding_packing(std::size_t count, std::uint64_t seed, double insertion_fraction,
+                                            double floor, std::uint64_t velocity_seed);
 
 // Text of examples/calendering_quick.toml, optionally with one line replaced.
 [[nodiscard]] std::string quick_scenario_text();

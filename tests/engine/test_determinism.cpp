@@ -10,8 +10,6 @@
 
 #include "ellc/io/input_error.hpp"
 
-#include "ellc/engine/packing.hpp"
-#include "ellc/engine/random.hpp"
 #include "ellc/engine/time_step.hpp"
 #include "engine_support.hpp"
 
@@ -33,23 +31,12 @@ constexpr int kThreadSteps = 400;
 std::string run_with_threads(int threads) {
   const int previous = omp_get_max_threads();
   omp_set_num_threads(threads);
-  PackingSpec spec;
-  spec.count = 100;
-  spec.mean_radius = 4.0;
-  spec.radius_spread = 0.1;
-  spec.seed = 3;
-  spec.density = testing::kScaledDensity;
-  spec.insertion_fraction = 0.4;
-  const Box box{42.0, 42.0};
-  ParticleSet particles = generate_packing(spec, box, 0.0, ellipsoid_overlap_test());
-  Random random(9);
-  for (auto& velocity : particles.velocity)
-    velocity = Eigen::Vector3d(random.uniform(-1, 1), random.uniform(-1, 1), random.uniform(-1, 1));
+  const ParticleSet particles = testing::colliding_packing(100, 3, 0.4, 0.0, 9);
   EngineSettings settings = testing::free_settings(NormalModel::becker_kamlah);
   settings.contact.friction = 0.3;
   settings.contact.damping_ratio = 0.05;
-  settings.box = box;
-  settings.dt = stable_time_step(particles, spec.density, settings.contact.material);
+  settings.box = testing::kCollidingBox;
+  settings.dt = stable_time_step(particles, testing::kScaledDensity, settings.contact.material);
   settings.parallel_threshold = 0;
   double top = 0.0;
   for (std::size_t slot = 0; slot < particles.size(); ++slot)

@@ -4,7 +4,6 @@
 
 #include <cmath>
 
-#include "ellc/engine/packing.hpp"
 #include "ellc/engine/random.hpp"
 #include "ellc/engine/time_step.hpp"
 #include "ellc/geometry/narrow_phase.hpp"
@@ -143,24 +142,14 @@ TEST(EngineDynamics, SphereMeetsEllipsoidWhenTheyFirstOverlap) {
 // Ellipsoids with friction and damping in a periodic box, no walls reached, no gravity: the total
 // linear momentum is conserved to rounding (every contact force acts on both bodies).
 TEST(EngineDynamics, MomentumIsConserved) {
-  PackingSpec spec;
-  spec.count = 60;
-  spec.mean_radius = 4.0;
-  spec.radius_spread = 0.1;
-  spec.seed = 11;
-  spec.density = kScaledDensity;
-  spec.insertion_fraction = 0.3;
-  const Box box{42.0, 42.0};
-  ParticleSet particles = generate_packing(spec, box, 500.0, ellipsoid_overlap_test());
-  Random random(5);
-  for (auto& velocity : particles.velocity)
-    velocity = Eigen::Vector3d(random.uniform(-1, 1), random.uniform(-1, 1), random.uniform(-1, 1));
+  ParticleSet particles = testing::colliding_packing(60, 11, 0.3, 500.0, 5);
+  Random spin(6);
   for (auto& omega : particles.angular_velocity)
-    omega = Eigen::Vector3d(random.uniform(-0.1, 0.1), random.uniform(-0.1, 0.1), random.uniform(-0.1, 0.1));
+    omega = Eigen::Vector3d(spin.uniform(-0.1, 0.1), spin.uniform(-0.1, 0.1), spin.uniform(-0.1, 0.1));
   EngineSettings settings = testing::free_settings(NormalModel::becker_kamlah);
   settings.contact.friction = 0.5;
   settings.contact.damping_ratio = 0.1;
-  settings.box = box;
+  settings.box = testing::kCollidingBox;
   settings.dt = stable_time_step(particles, kScaledDensity, kNmc);
   const auto momentum = [](const ParticleSet& p) {
     Eigen::Vector3d total = Eigen::Vector3d::Zero();
