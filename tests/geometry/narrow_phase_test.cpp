@@ -224,6 +224,57 @@ TEST(NarrowPhase, CosTwoAlphaMatchesAlpha) {
   }
 }
 
+// A, B come from the summed curvature tensors; they must be eq. (5) of the two sides' own
+// principal curvatures and α, which the narrow phase reports beside them.
+TEST(NarrowPhase, RelativeCurvatureIsEquationFiveOfTheSides) {
+  Rng rng(18);
+  for (int sample = 0; sample < 1000; ++sample) {
+    const Pair pair = random_pair(rng, test::uniform(rng, 0.01, 0.3));
+    const NarrowPhaseResult result = ellipsoid_contact(pair.i, pair.j);
+    if (result.status != NarrowPhaseStatus::contact) continue;
+    const ContactGeometry& g = result.geometry;
+    const RelativeCurvature eq5 = relative_curvature(g.curvature_i.principal(), g.curvature_j.principal(), g.alpha);
+    EXPECT_NEAR(g.relative.a_sum, eq5.a_sum, 1e-12 * eq5.b_sum);
+    EXPECT_NEAR(g.relative.b_sum, eq5.b_sum, 1e-12 * eq5.b_sum);
+  }
+}
+
+// The DEM options: one Newton step from last step's normal. Against the solve to rounding, the
+// normal stays within ~|step|² (the normal turns by up to ~10⁻³ rad per step here, so 10⁻⁶; the
+// bound leaves a factor 3) and the overlap, stationary in n, within rounding; the per-side
+// curvatures are skipped, A and B are not.
+TEST(NarrowPhase, TimeSteppingOptionsStayCloseToTheSolveToRounding) {
+  constexpr NarrowPhaseOptions kEngineOptions{1e-3, false};  // the DEM engine's defaults (settings.hpp)
+  Rng rng(19);
+  int solves = 0;
+  int newton_steps = 0;
+  for (int sample = 0; sample < 200; ++sample) {
+    Pair pair = random_pair(rng, 0.05);
+    NarrowPhaseResult previous = ellipsoid_contact(pair.i, pair.j);
+    ASSERT_EQ(previous.status, NarrowPhaseStatus::contact);
+    const Eigen::Vector3d velocity = 1e-3 * test::random_unit(rng);
+    const Eigen::Quaterniond spin(Eigen::AngleAxisd(3e-4, test::random_unit(rng)));
+    for (int step = 0; step < 20; ++step) {
+      pair.j = Ellipsoid(pair.j.semi_axes(), {pair.j.center() + velocity, spin * pair.j.pose().orientation});
+      const NarrowPhaseResult fast = ellipsoid_contact(pair.i, pair.j, &previous.warm_start, kEngineOptions);
+      const NarrowPhaseResult exact = ellipsoid_contact(pair.i, pair.j);
+      ASSERT_EQ(fast.status, exact.status);
+      previous = fast;
+      if (fast.status != NarrowPhaseStatus::contact) continue;
+      ++solves;
+      newton_steps += fast.iterations;
+      const double scale = pair.i.bounding_radius() + pair.j.bounding_radius();
+      EXPECT_LT((fast.geometry.normal - exact.geometry.normal).norm(), 3e-6);
+      EXPECT_NEAR(fast.geometry.overlap, exact.geometry.overlap, 1e-12 * scale);
+      EXPECT_NEAR(fast.geometry.relative.a_sum, exact.geometry.relative.a_sum, 1e-5 * exact.geometry.relative.b_sum);
+      EXPECT_NEAR(fast.geometry.relative.b_sum, exact.geometry.relative.b_sum, 1e-5 * exact.geometry.relative.b_sum);
+      EXPECT_EQ(fast.geometry.curvature_i.kappa_1, 0.0);  // skipped
+    }
+  }
+  ASSERT_GT(solves, 1000);
+  EXPECT_LT(newton_steps, 1.2 * solves) << "about one Newton step per time step";
+}
+
 TEST(NarrowPhase, DegenerateInputIsReportedNotComputed) {
   const Ellipsoid good(Eigen::Vector3d(1, 2, 3));
   const Ellipsoid bad(Eigen::Vector3d(1, 0, 3));

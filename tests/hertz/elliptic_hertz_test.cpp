@@ -103,6 +103,10 @@ TEST(Hertz, RelativeCurvatureEqualsHalfTheEigenvaluesOfTheCurvatureTensorSum) {
     const auto curvature = ellc::relative_curvature({0.3, 0.1}, {0.25, 0.05}, alpha);
     EXPECT_NEAR(curvature.a_sum, 0.5 * solver.eigenvalues()(0), 1e-15) << alpha;
     EXPECT_NEAR(curvature.b_sum, 0.5 * solver.eigenvalues()(1), 1e-15) << alpha;
+    // The tensor form the narrow phase uses is the same eq. (5).
+    const auto from_tensor = ellc::relative_curvature_from_tensor(sum(0, 0), sum(0, 1), sum(1, 1));
+    EXPECT_NEAR(from_tensor.a_sum, curvature.a_sum, 1e-15) << alpha;
+    EXPECT_NEAR(from_tensor.b_sum, curvature.b_sum, 1e-15) << alpha;
     const auto swapped = ellc::relative_curvature({0.25, 0.05}, {0.3, 0.1}, -alpha);
     EXPECT_NEAR(swapped.a_sum, curvature.a_sum, 1e-16);
     EXPECT_NEAR(swapped.b_sum, curvature.b_sum, 1e-16);

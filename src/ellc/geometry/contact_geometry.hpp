@@ -15,10 +15,13 @@ struct ContactGeometry {
   double overlap = 0.0;                                // δ = (p_I − p_J)·n; > 0 in contact
   Eigen::Vector3d surface_point_i = Eigen::Vector3d::Zero();  // on I, outward normal +n
   Eigen::Vector3d surface_point_j = Eigen::Vector3d::Zero();  // on J, outward normal −n
+  RelativeCurvature relative;    // A ≤ B of eq. (5): all the law needs of the curvatures
+  // Each side's curvatures and the angle between them (for reporting; the narrow phase leaves
+  // them at these defaults when NarrowPhaseOptions::surface_curvatures is off).
   SurfaceCurvature curvature_i;  // of I at surface_point_i
   SurfaceCurvature curvature_j;  // of J at surface_point_j (zero for a wall)
   double alpha = 0.0;            // angle between the κ1 directions of I and J, in [0, π/2]
-  double cos_two_alpha = 1.0;    // cos 2α, the form eq. (5) uses (computed without a cos)
+  double cos_two_alpha = 1.0;    // cos 2α (computed without a cos)
 };
 
 // The angle α ∈ [0, π/2] between the κ1 directions (principal directions are lines, so α and

@@ -12,7 +12,6 @@ namespace {
 
 constexpr int kMaxNewtonSteps = 40;
 constexpr double kGradientTolerance = 1e-14;  // |tangential gradient| / (ρ_I + ρ_J)
-constexpr double kFinalStep = 1e-9;           // a Newton step this small is taken and ends the solve (error ~ step²)
 constexpr double kMaxStep = 0.5;              // radians per Newton step
 constexpr double kFullStep = 1e-7;            // below this the Newton step is taken without a line search
 
@@ -116,7 +115,7 @@ EIGEN_ALWAYS_INLINE Hessian2 reach_hessian(const PairData& pair, const AlongNorm
 }
 
 // Damped Newton on the unit sphere for a local minimum of g. Monotone in g.
-Solve common_normal(const PairData& pair, const AlongNormal& start) noexcept {
+Solve common_normal(const PairData& pair, const AlongNormal& start, double final_step) noexcept {
   Solve solve;
   solve.at = start;
   const double scale = solve.at.reach.sum();
@@ -159,7 +158,7 @@ Solve common_normal(const PairData& pair, const AlongNormal& start) noexcept {
     }
     if (length < kFullStep && shift == 0.0) {  // quadratic convergence region: no line search
       solve.at = pair.along(unit(at.normal + s1 * frame.t1 + s2 * frame.t2));
-      if (length <= kFinalStep) {  // the error left is O(length²): at the rounding floor
+      if (length <= final_step) {  // the error left is O(length²)
         solve.converged = true;
         return solve;
       }
@@ -171,6 +170,11 @@ Solve common_normal(const PairData& pair, const AlongNormal& start) noexcept {
       if (trial.overlap <= at.overlap + 1e-15 * scale) {
         solve.at = trial;
         accepted = true;
+        // A full Newton step (not damped, not shortened) this short ends the solve, as above.
+        if (halving == 0 && shift == 0.0 && length <= final_step) {
+          solve.converged = true;
+          return solve;
+        }
       }
       s1 *= 0.5;
       s2 *= 0.5;
@@ -208,7 +212,7 @@ bool physical(const Solve& solve, const Eigen::Vector3d& offset) noexcept {
 }
 
 // The solved common normal: contact (with curvatures and α) or, for g ≤ 0, separated.
-void mark_solved(const Ellipsoid& body_i, const Ellipsoid& body_j, const AlongNormal& at,
+void mark_solved(const Ellipsoid& body_i, const Ellipsoid& body_j, const AlongNormal& at, bool surface_curvatures,
                  NarrowPhaseResult& result) noexcept {
   if (!(at.overlap > 0.0)) {
     mark_separated(body_i, body_j, at, result);
@@ -219,22 +223,26 @@ void mark_solved(const Ellipsoid& body_i, const Ellipsoid& body_j, const AlongNo
   fill_support_geometry(body_i, body_j, at, geometry);
   // Shape operators of both implicit surfaces (x − c)ᵀ M_w (x − c) = 1 in one tangent frame:
   // Wₐᵦ = tₐᵀ M_w tᵦ / |M_w (x − c)|, and at the point with normal ±n, 1/|M_w (x − c)| = ρ(n)
-  // (Ellipsoid::curvature_in_frame, both bodies at once).
+  // (Ellipsoid::curvature_in_frame, both bodies at once). Their sum is the relative curvature
+  // tensor of eq. (5); each alone gives that side's principal curvatures.
   const auto frame = geometry_detail::tangent_frame(at.normal);
   const TangentForms forms = tangent_forms(SymmetricLanes(body_i.shape(), body_j.shape()), frame);
   const Lanes w11 = forms.q11 * at.reach;
   const Lanes w12 = forms.q12 * at.reach;
   const Lanes w22 = forms.q22 * at.reach;
-  geometry.curvature_i = curvature_from_shape_operator(w11[0], w12[0], w22[0], frame, at.normal);
-  geometry.curvature_j = curvature_from_shape_operator(w11[1], w12[1], w22[1], frame, -at.normal);
-  pair_principal_directions(geometry, at.normal);
+  geometry.relative = relative_curvature_from_tensor(w11.sum(), w12.sum(), w22.sum());
+  if (surface_curvatures) {
+    geometry.curvature_i = curvature_from_shape_operator(w11[0], w12[0], w22[0], frame, at.normal);
+    geometry.curvature_j = curvature_from_shape_operator(w11[1], w12[1], w22[1], frame, -at.normal);
+    pair_principal_directions(geometry, at.normal);
+  }
   store_warm_start(at.normal, result.warm_start);
 }
 
 }  // namespace
 
 NarrowPhaseResult ellipsoid_contact(const Ellipsoid& body_i, const Ellipsoid& body_j,
-                                    const NarrowPhaseWarmStart* warm) noexcept {
+                                    const NarrowPhaseWarmStart* warm, const NarrowPhaseOptions& options) noexcept {
   NarrowPhaseResult result;  // status failed until proven otherwise
   if (!body_i.valid() || !body_j.valid()) return result;
   const PairData pair{SymmetricLanes(body_i.inverse_shape(), body_j.inverse_shape()), body_j.center() - body_i.center()};
@@ -256,10 +264,10 @@ NarrowPhaseResult ellipsoid_contact(const Ellipsoid& body_i, const Ellipsoid& bo
         mark_separated(body_i, body_j, at_start, result);
         return result;
       }
-      const Solve solve = common_normal(pair, at_start);
+      const Solve solve = common_normal(pair, at_start, options.final_step);
       result.iterations += solve.steps;
       if (physical(solve, pair.offset)) {
-        mark_solved(body_i, body_j, solve.at, result);
+        mark_solved(body_i, body_j, solve.at, options.surface_curvatures, result);
         return result;
       }
     }
@@ -282,14 +290,14 @@ NarrowPhaseResult ellipsoid_contact(const Ellipsoid& body_i, const Ellipsoid& bo
     body_i.semi_axes().minCoeff(&thinnest);
     start = body_i.rotation().col(thinnest);
   }
-  Solve solve = common_normal(pair, pair.along(unit(start)));
+  Solve solve = common_normal(pair, pair.along(unit(start)), options.final_step);
   result.iterations += solve.steps;
   if (!physical(solve, pair.offset) && distance > 0.0) {  // last resort: from the line of centres
-    solve = common_normal(pair, pair.along(centre_line()));
+    solve = common_normal(pair, pair.along(centre_line()), options.final_step);
     result.iterations += solve.steps;
   }
   if (physical(solve, pair.offset)) {
-    mark_solved(body_i, body_j, solve.at, result);
+    mark_solved(body_i, body_j, solve.at, options.surface_curvatures, result);
   } else {
     result.geometry.normal = centre_line();  // failed: zeroed geometry, normal = line of centres
   }

@@ -61,8 +61,23 @@ struct NarrowPhaseResult {
   bool cold_start = false;              // the Perram–Wertheim start was used
 };
 
+// How far the Newton solve goes. A full (undamped) Newton step of length s radians leaves an
+// error in the normal of about s² (quadratic convergence), so a step shorter than `final_step` is
+// taken and ends the solve. The default ends at the rounding floor. A DEM engine whose warm start
+// is off by the normal's turn in one time step (~10⁻⁴–10⁻³ rad) may pass 10⁻³: one Newton step
+// instead of two, an error in the normal of 10⁻⁸–10⁻⁶ rad, and the overlap, being stationary in
+// n, off by only the rounding.
+//
+// `surface_curvatures` off skips each side's principal curvatures, directions and α (ContactGeometry
+// keeps their defaults); the relative curvature A, B, all the law needs, is always filled.
+struct NarrowPhaseOptions {
+  double final_step = 1e-9;
+  bool surface_curvatures = true;
+};
+
 [[nodiscard]] NarrowPhaseResult ellipsoid_contact(const Ellipsoid& body_i, const Ellipsoid& body_j,
-                                                  const NarrowPhaseWarmStart* warm = nullptr) noexcept;
+                                                  const NarrowPhaseWarmStart* warm = nullptr,
+                                                  const NarrowPhaseOptions& options = {}) noexcept;
 
 // g(n) above for one unit axis n, with J's centre at c_I + `centre_offset` (a periodic image of J
 // may sit elsewhere than body_j.center(); only J's shape S_J is used). g < 0 proves that n is a

@@ -5,9 +5,7 @@ namespace ellc {
 NormalContact normal_contact(const ContactGeometry& geometry, const ContactMaterial& material, double mean_radius_sum,
                              HertzMode mode, const LawParameters& parameters, double max_overlap) noexcept {
   NormalContact contact;
-  const RelativeCurvature curvature = relative_curvature_from_cos(
-      geometry.curvature_i.principal(), geometry.curvature_j.principal(), geometry.cos_two_alpha);
-  contact.constants = make_contact_constants(material, hertz_shape(curvature, mode), mean_radius_sum, parameters);
+  contact.constants = make_contact_constants(material, hertz_shape(geometry.relative, mode), mean_radius_sum, parameters);
   contact.law = evaluate_contact(contact.constants, geometry.overlap, max_overlap);
   contact.force_on_j = contact.law.force * geometry.normal;
   contact.application_point = geometry.point;

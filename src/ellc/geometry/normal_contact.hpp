@@ -1,7 +1,8 @@
 #pragma once
-// From contact geometry straight to the normal force: the curvatures and α of the geometry go
-// through make_contact_constants (eq. 5–10, 50–54) and evaluate_contact (the Becker–Kamlah law)
-// unchanged, so a tip-to-tip geometry gives exactly the numbers of `ellc curve`.
+// From contact geometry straight to the normal force: the relative curvature A, B of the geometry
+// (eq. 5) goes through make_contact_constants (eq. 6–10, 50–54) and evaluate_contact (the
+// Becker–Kamlah law) unchanged, so a tip-to-tip geometry gives the numbers of `ellc curve` (to
+// the rounding of the geometry).
 
 #include <Eigen/Core>
 

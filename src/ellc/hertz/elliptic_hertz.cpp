@@ -117,6 +117,13 @@ RelativeCurvature relative_curvature_from_cos(PrincipalCurvatures body_i, Princi
   return {0.5 * (sum - difference), 0.5 * (sum + difference)};
 }
 
+RelativeCurvature relative_curvature_from_tensor(double sum_11, double sum_12, double sum_22) noexcept {
+  const double half_split = 0.5 * (sum_11 - sum_22);
+  const double sum = 0.5 * (sum_11 + sum_22);                                        // A + B = ½ tr W
+  const double difference = std::sqrt(half_split * half_split + sum_12 * sum_12);  // B − A
+  return {0.5 * (sum - difference), 0.5 * (sum + difference)};
+}
+
 HertzShape hertz_shape(RelativeCurvature curvature, HertzMode mode) noexcept {
   const double equivalent_radius = 0.5 / std::sqrt(curvature.a_sum * curvature.b_sum);
   const double ratio = std::max(curvature.b_sum / curvature.a_sum, 1.0);

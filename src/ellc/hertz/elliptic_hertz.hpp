@@ -43,9 +43,14 @@ struct HertzContact {
 // `alpha` is the angle between the κ1 directions of the two bodies.
 [[nodiscard]] RelativeCurvature relative_curvature(PrincipalCurvatures body_i, PrincipalCurvatures body_j,
                                                    double alpha) noexcept;
-// The same from cos 2α directly, for callers that hold it (the narrow phase: spares a cos per contact).
+// The same from cos 2α directly, for callers that hold it.
 [[nodiscard]] RelativeCurvature relative_curvature_from_cos(PrincipalCurvatures body_i, PrincipalCurvatures body_j,
                                                             double cos_two_alpha) noexcept;
+// Eq. (5) in tensor form, for callers holding both bodies' curvature tensors (shape operators) in
+// one tangent frame: their sum W has eigenvalues 2A and 2B. With W_k = R(θ_k) diag(κ1^k, κ2^k) R(θ_k)ᵀ
+// and α = θ_I − θ_J, tr W = Σκ and (W₁₁ − W₂₂)² + 4 W₁₂² = Δ_I² + Δ_J² + 2 Δ_I Δ_J cos 2α, so this is
+// eq. (5) term for term, without the principal directions or α.
+[[nodiscard]] RelativeCurvature relative_curvature_from_tensor(double sum_11, double sum_12, double sum_22) noexcept;
 
 // R_e, e², f1, f2 for A ≤ B, A > 0. Hale: eq. (4), (7) with B/A ≥ 1. Exact: solves
 // B/A = (E/k² − K)/(K − E) for k = b_c/a_c (Johnson 1985, Sec. 4.2).
