@@ -28,16 +28,35 @@ constexpr std::uint64_t kSteps = 1300;
 // floor and a descending plate, every loop threaded (threshold 0): hundreds of collisions.
 constexpr int kThreadSteps = 400;
 
-std::string run_with_threads(int threads) {
+struct CollidingRun {
+  int threads = 1;
+  bool skip_proven_separated = true;
+  bool some_spheres = false;  // every third body a sphere inside its ellipsoid: all three pair paths
+};
+
+struct CollidingResult {
+  std::string state;
+  std::size_t pairs_proven_apart = 0;  // at the end
+};
+
+CollidingResult run_colliding(const CollidingRun& run) {
   const int previous = omp_get_max_threads();
-  omp_set_num_threads(threads);
-  const ParticleSet particles = testing::colliding_packing(100, 3, 0.4, 0.0, 9);
+  omp_set_num_threads(run.threads);
+  const ParticleSet ellipsoids = testing::colliding_packing(100, 3, 0.4, 0.0, 9);
+  ParticleSet particles;
+  for (std::size_t slot = 0; slot < ellipsoids.size(); ++slot) {
+    const Eigen::Vector3d& axes = ellipsoids.semi_axes[slot];
+    particles.add(ellipsoids.id[slot], run.some_spheres && slot % 3 == 0 ? Eigen::Vector3d::Constant(axes.minCoeff()) : axes,
+                  testing::kScaledDensity, ellipsoids.position[slot], ellipsoids.orientation[slot]);
+    particles.velocity[slot] = ellipsoids.velocity[slot];
+  }
   EngineSettings settings = testing::free_settings(NormalModel::becker_kamlah);
   settings.contact.friction = 0.3;
   settings.contact.damping_ratio = 0.05;
   settings.box = testing::kCollidingBox;
   settings.dt = stable_time_step(particles, testing::kScaledDensity, settings.contact.material);
   settings.parallel_threshold = 0;
+  settings.skip_proven_separated = run.skip_proven_separated;
   double top = 0.0;
   for (std::size_t slot = 0; slot < particles.size(); ++slot)
     top = std::max(top, particles.position[slot].z() + particles.bounding_radius[slot]);
@@ -49,14 +68,31 @@ std::string run_with_threads(int threads) {
   }
   omp_set_num_threads(previous);
   EXPECT_GT(contacts, 1000U) << "the test needs many contacts";
-  return state_bytes(sim);
+  return {state_bytes(sim), sim.pairs_proven_apart()};
 }
+
+std::string run_with_threads(int threads) { return run_colliding({threads}).state; }
 
 TEST(EngineDeterminism, OneAndTwoThreadsGiveBitwiseEqualStates) {
   const std::string one = run_with_threads(1);
   const std::string two = run_with_threads(2);
   ASSERT_EQ(one.size(), two.size());
   EXPECT_TRUE(one == two) << "the state after " << kThreadSteps << " steps depends on the thread count";
+}
+
+// Pairs proven apart are skipped (docs/engine.md): the skipped test would have found them apart,
+// so skipping must change nothing at all, for ellipsoid, sphere and mixed pairs alike. (A bound
+// that forgets the rotation of the bodies makes this fail.)
+TEST(EngineDeterminism, SkippingPairsProvenApartChangesNothing) {
+  for (const bool some_spheres : {false, true}) {
+    const CollidingResult skipping = run_colliding({2, true, some_spheres});
+    const CollidingResult testing_all = run_colliding({2, false, some_spheres});
+    EXPECT_GT(skipping.pairs_proven_apart, 20U) << "the test needs pairs that are skipped";
+    EXPECT_EQ(testing_all.pairs_proven_apart, 0U);
+    ASSERT_EQ(skipping.state.size(), testing_all.state.size());
+    EXPECT_TRUE(skipping.state == testing_all.state)
+        << "skipping pairs proven apart changed the state (spheres mixed in: " << some_spheres << ")";
+  }
 }
 
 TEST(EngineDeterminism, RestartReproducesUninterruptedRunBitwise) {

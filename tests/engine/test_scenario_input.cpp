@@ -56,6 +56,13 @@ TEST(EngineScenarioInput, BadValuesAreNamed) {
   EXPECT_NE(input_error([&] { (void)quick_scenario(text); }).find("contact.friction"), std::string::npos);
   const std::string shape = replace_line(quick_scenario_text(), "shape", "shape = \"cube\"");
   EXPECT_NE(input_error([&] { (void)quick_scenario(shape); }).find("packing.shape"), std::string::npos);
+  for (const char* step : {"0.0", "0.5"}) {  // a Newton step length in (0, 0.1] rad
+    const std::string newton =
+        replace_line(quick_scenario_text(), "friction", std::string("friction = 0.3\nnarrow_phase_final_step = ") + step);
+    EXPECT_NE(input_error([&] { (void)quick_scenario(newton); }).find("contact.narrow_phase_final_step"),
+              std::string::npos)
+        << step;
+  }
 }
 
 TEST(EngineScenarioInput, TimeStepAboveEstimateNeedsForce) {

@@ -2,6 +2,8 @@
 // warm-started from the pair's previous normal) and wall contact, then normal_contact() for the
 // constants and the law. Nothing here re-derives a formula of the law.
 
+#include <algorithm>
+
 #include "ellc/engine/packing.hpp"
 #include "ellc/engine/pair_geometry.hpp"
 #include "ellc/geometry/narrow_phase.hpp"
@@ -43,7 +45,11 @@ PairSolution with_law(const NarrowPhaseResult& found, double mean_radius_sum, Co
     solution.status = PairStatus::failed;
     return solution;
   }
-  if (found.status == NarrowPhaseStatus::separated || !(found.geometry.overlap > 0.0)) return solution;
+  if (found.status == NarrowPhaseStatus::separated || !(found.geometry.overlap > 0.0)) {
+    // g(n) ≤ 0 along the stored normal: the clearance the next steps' shortcut would test.
+    if (found.status == NarrowPhaseStatus::separated) solution.clearance = std::max(-found.geometry.overlap, 0.0);
+    return solution;
+  }
   const NormalContact contact = normal_contact(found.geometry, context.material, mean_radius_sum, context.hertz,
                                                context.law, history.max_overlap);
   history.constants = contact.constants;
@@ -63,14 +69,19 @@ PairSolution solve_ellipsoid_pair(const BodyRef& body_i, const BodyRef& body_j, 
   // Apart last step, and last step's separating axis still separates: no narrow phase. Most
   // candidate pairs of a dense packing are such near misses. (Images of J share its shape S_J.)
   const WarmStart& axis = history.warm_start;
-  if (!history.active && axis.valid && body_i.shape != nullptr && body_j.shape != nullptr &&
-      overlap_along(*body_i.shape, *body_j.shape, body_j.centre - body_i.centre,
-                    Eigen::Vector3d(axis.values[0], axis.values[1], axis.values[2])) < 0.0)
-    return {};
+  if (!history.active && axis.valid && body_i.shape != nullptr && body_j.shape != nullptr) {
+    const double overlap = overlap_along(*body_i.shape, *body_j.shape, body_j.centre - body_i.centre,
+                                         Eigen::Vector3d(axis.values[0], axis.values[1], axis.values[2]));
+    if (overlap < 0.0) {
+      PairSolution apart;
+      apart.clearance = -overlap;
+      return apart;
+    }
+  }
   const NarrowPhaseWarmStart warm = to_geometry(history.warm_start);
   const NarrowPhaseResult found = with_shape(body_i, [&](const Ellipsoid& ellipsoid_i) {
     return with_shape(body_j, [&](const Ellipsoid& ellipsoid_j) {
-      return ellipsoid_contact(ellipsoid_i, ellipsoid_j, warm.valid ? &warm : nullptr);
+      return ellipsoid_contact(ellipsoid_i, ellipsoid_j, warm.valid ? &warm : nullptr, context.narrow_phase);
     });
   });
   if (found.status != NarrowPhaseStatus::failed) history.warm_start = from_geometry(found.warm_start);

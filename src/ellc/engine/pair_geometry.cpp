@@ -1,5 +1,6 @@
 #include "ellc/engine/pair_geometry.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace ellc::engine {
@@ -11,6 +12,8 @@ NormalContext make_normal_context(const ContactSettings& settings) noexcept {
   if (settings.normal_model == NormalModel::hertz) context.material.yield_stress = 1e30;
   context.hertz = settings.hertz;
   context.law = settings.law;
+  context.narrow_phase.final_step = settings.narrow_phase_final_step;
+  context.narrow_phase.surface_curvatures = false;  // the law needs A and B only
   return context;
 }
 
@@ -35,7 +38,10 @@ PairSolution sphere_pair(const BodyRef& body_i, const BodyRef& body_j, ContactHi
   const Eigen::Vector3d joint = body_j.centre - body_i.centre;
   const double distance = joint.norm();
   const double overlap = radius_i + radius_j - distance;
-  if (!(overlap > 0.0)) return solution;
+  if (!(overlap > 0.0)) {
+    solution.clearance = std::max(-overlap, 0.0);
+    return solution;
+  }
   if (!(distance > 0.0)) {
     solution.status = PairStatus::failed;  // coincident centres: no normal
     return solution;

@@ -9,11 +9,8 @@
 
 #include "ellc/engine/contact_history.hpp"
 #include "ellc/engine/settings.hpp"
+#include "ellc/geometry/narrow_phase.hpp"
 #include "ellc/law/contact_law.hpp"
-
-namespace ellc {
-class Ellipsoid;
-}
 
 namespace ellc::engine {
 
@@ -24,6 +21,9 @@ struct PairSolution {
   Eigen::Vector3d normal = Eigen::Vector3d::UnitZ();  // unit, I → J (particle → wall for walls)
   Eigen::Vector3d point = Eigen::Vector3d::Zero();    // where the contact forces act
   double overlap = 0.0;
+  // Separated: a clearance the bodies are proven apart by along one fixed axis (the bodies stay
+  // apart while their points move less than this in total); 0 when none is known.
+  double clearance = 0.0;
   LawResult law;
   const ContactConstants* constants = nullptr;  // points into the history (valid while it lives)
 };
@@ -33,6 +33,7 @@ struct NormalContext {
   ContactMaterial material;  // E_e and Y (Y unreachable for NormalModel::hertz)
   HertzMode hertz = HertzMode::hale;
   LawParameters law;
+  NarrowPhaseOptions narrow_phase;
 };
 
 [[nodiscard]] NormalContext make_normal_context(const ContactSettings& settings) noexcept;

@@ -44,6 +44,10 @@ void read_contact(TableReader& table, ContactSettings& contact) {
   if (contact.damping_ratio >= 1.0) table.fail("damping_ratio", contact.damping_ratio, "a number in [0, 1)");
   contact.friction = non_negative_or(table, "friction", contact.friction);
   contact.wall_friction = non_negative_or(table, "wall_friction", contact.wall_friction);
+  contact.narrow_phase_final_step = positive_or(table, "narrow_phase_final_step", contact.narrow_phase_final_step);
+  if (contact.narrow_phase_final_step > 0.1)
+    table.fail("narrow_phase_final_step", contact.narrow_phase_final_step,
+               "a Newton step length in (0, 0.1] rad (1e-9 solves the common normal to rounding)");
   table.finish();
 }
 

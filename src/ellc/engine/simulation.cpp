@@ -67,6 +67,12 @@ void Simulation::prepare_derived_arrays() {
   omega_world_.assign(count, Eigen::Vector3d::Zero());
   shapes_.assign(count, Ellipsoid(Eigen::Vector3d::Ones()));
   index_pairs_by_particle();
+  forget_proven_separations();
+}
+
+void Simulation::forget_proven_separations() {
+  travel_.assign(particles_.size(), 0.0);
+  clearance_budget_.assign(pairs_.size(), 0.0);  // travel ≥ 0: no pair is skipped until tested
 }
 
 void Simulation::index_pairs_by_particle() {
@@ -86,6 +92,13 @@ void Simulation::index_pairs_by_particle() {
   }
 }
 
+std::size_t Simulation::pairs_proven_apart() const noexcept {
+  std::size_t count = 0;
+  for (std::size_t index = 0; index < pairs_.size(); ++index)
+    count += travel_[pairs_[index].i] + travel_[pairs_[index].j] < clearance_budget_[index] ? 1U : 0U;
+  return count;
+}
+
 void Simulation::set_wall_position(int wall, double position) { walls_[wall].position = position; }
 
 ResponseParameters Simulation::response_parameters(double friction) const noexcept {
@@ -99,6 +112,7 @@ void Simulation::rebuild_neighbours() {
   std::swap(pairs_, spare_pairs_);  // the old list's storage serves the next rebuild
   pair_results_.assign(pairs_.size(), PairResult{});
   index_pairs_by_particle();
+  forget_proven_separations();
   reference_position_ = particles_.position;
   ++rebuilds_;
 }
@@ -144,8 +158,13 @@ bool Simulation::kick_and_drift(double half_dt) noexcept {
 #pragma omp parallel for schedule(static) reduction(|| : stale) if (count > settings_.parallel_threshold)
   for (std::size_t slot = 0; slot < count; ++slot) {
     kick_particle(slot, half_dt, gravity, drag);
+    const Eigen::Vector3d before = p.position[slot];
     p.position[slot] += dt * p.velocity[slot];
     p.orientation[slot] = advance_orientation(p.orientation[slot], p.angular_velocity[slot], dt);
+    // No point of the body moves more than the centre's step plus the rotation angle |ω| dt times
+    // the bounding radius; the factors and the 1e-15 cover the rounding of the computed motion.
+    const double turn = p.angular_velocity[slot].norm() * dt * (1.0 + 1e-9) + 1e-15;
+    travel_[slot] += (p.position[slot] - before).norm() * (1.0 + 1e-12) + turn * p.bounding_radius[slot];
     refresh_body_frame(slot);
     stale = stale || (p.position[slot] - reference_position_[slot]).squaredNorm() > limit_sq;
   }
@@ -258,8 +277,11 @@ void Simulation::evaluate_pair(std::size_t index, const ResponseParameters& para
   const std::uint32_t j = pair.j;
   const Eigen::Vector3d centre_j = p.position[j] + pair.shift;
   const double reach = p.bounding_radius[i] + p.bounding_radius[j];
+  const double travel = travel_[i] + travel_[j];
+  if (travel < clearance_budget_[index]) return;  // proven apart: the test below would say so too
   PairSolution solution;
-  if ((centre_j - p.position[i]).squaredNorm() < reach * reach) {
+  const double distance_sq = (centre_j - p.position[i]).squaredNorm();
+  if (distance_sq < reach * reach) {
     // shapes_ holds posed ellipsoids for non-spheres only (a sphere meeting an ellipsoid is
     // posed on demand by the adapter, and never takes the separating-axis shortcut).
     const BodyRef body_i{p.semi_axes[i], p.position[i], p.orientation[i], p.mean_radius[i],
@@ -267,6 +289,11 @@ void Simulation::evaluate_pair(std::size_t index, const ResponseParameters& para
     const BodyRef body_j{p.semi_axes[j], centre_j, p.orientation[j], p.mean_radius[j],
                          is_sphere_[j] == 0 ? &shapes_[j] : nullptr};
     solution = solve_pair(body_i, body_j, is_sphere_[i] != 0 && is_sphere_[j] != 0, history, normal_context_);
+    // A sphere meeting an ellipsoid re-solves (and re-stores its warm start) every step: only
+    // the bounding-sphere clearance below may skip it, or skipping would change its history.
+    if (is_sphere_[i] != is_sphere_[j]) solution.clearance = 0.0;
+  } else {
+    solution.clearance = std::sqrt(distance_sq) - reach;  // bounding spheres apart
   }
   if (solution.status == PairStatus::failed) {
     result.failed = true;
@@ -274,6 +301,9 @@ void Simulation::evaluate_pair(std::size_t index, const ResponseParameters& para
   }
   if (solution.status == PairStatus::separated) {
     if (history.active) result.released_work = clear_history(history);
+    // Margin: the clearance itself carries rounding of a few ulp of the bodies' size.
+    const double usable = solution.clearance - 1e-12 * reach;
+    if (settings_.skip_proven_separated && usable > 0.0) clearance_budget_[index] = travel + usable;
     return;
   }
   history.active = true;

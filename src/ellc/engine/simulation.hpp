@@ -67,6 +67,8 @@ class Simulation {
   [[nodiscard]] double time() const noexcept { return time_; }
   [[nodiscard]] const std::vector<PairSlot>& pairs() const noexcept { return pairs_; }
   [[nodiscard]] std::uint64_t neighbour_rebuilds() const noexcept { return rebuilds_; }
+  // Candidate pairs currently proven apart, whose test the next step skips (a diagnostic).
+  [[nodiscard]] std::size_t pairs_proven_apart() const noexcept;
 
   // Observables (serial sums in slot order: deterministic).
   [[nodiscard]] double kinetic_energy() const noexcept;  // translational + rotational, pJ
@@ -108,6 +110,7 @@ class Simulation {
   static void state_fields(Io& io, Self& self);  // simulation_state.cpp
   void prepare_derived_arrays();                 // sphere flags, body frames, pair index: from the state
   void index_pairs_by_particle();
+  void forget_proven_separations();
   void rebuild_neighbours();
   void refresh_body_frames() noexcept;
   void refresh_body_frame(std::size_t slot) noexcept;
@@ -130,6 +133,12 @@ class Simulation {
   std::vector<Eigen::Vector3d> omega_world_;
   std::vector<Ellipsoid> shapes_;  // posed ellipsoids of this step (non-spheres only)
   std::vector<Eigen::Vector3d> reference_position_;  // at the last neighbour-list build
+  // Proven separation (docs/engine.md, "Pairs proven apart"): travel_[k] bounds how far any point
+  // of particle k has moved since the last neighbour-list build; a pair found apart with clearance
+  // c along a fixed axis stays apart while travel_[i] + travel_[j] < clearance_budget_[pair],
+  // which is set to (their travel then) + c. Not state: a pair without a budget is just tested.
+  std::vector<double> travel_;
+  std::vector<double> clearance_budget_;
   std::vector<PairSlot> pairs_;
   std::vector<PairSlot> spare_pairs_;  // storage for the next rebuild's list (no state)
   std::vector<PairResult> pair_results_;
