@@ -89,6 +89,26 @@ TEST(Hertz, HaleFactorsFallSlowlyFromOne) {
   }
 }
 
+// Eq. (4), (7) evaluated directly in long double (pow, expm1): the double evaluation, which takes
+// log(expm1(pL)) from a series below B/A ≈ 1500 to save transcendental calls, must agree to
+// rounding on both sides of that switch.
+TEST(Hertz, HaleFactorsAreEquationFourToRounding) {
+  for (double ratio = 1.0; ratio < 1e5; ratio *= 1.0 + 1.0 / 64.0) {
+    for (const double r : {ratio, std::nextafter(ratio, 2.0 * ratio), 1.0 + (ratio - 1.0) * 1e-9}) {
+      const auto shape = ellc::hertz_shape({1.0, r}, HertzMode::hale);
+      const long double log_ratio = std::log(static_cast<long double>(r));
+      const long double f1 = 1.0L - std::pow(std::expm1(0.0602L * log_ratio), 1.456L);
+      const long double f2 = 1.0L - std::pow(std::expm1(0.0684L * log_ratio), 1.531L);
+      const long double e2 = -std::expm1(-(4.0L / 3.0L) * log_ratio);
+      // Beyond B/A ~ 10⁴, f2 = 1 − X with X → 1 (and below): 1 − X keeps the rounding of X, ~1 ulp.
+      const double tolerance = r < 1e4 ? 4e-16 : 1e-15;
+      EXPECT_NEAR(shape.f1, static_cast<double>(f1), tolerance) << "B/A = " << r;
+      EXPECT_NEAR(shape.f2, static_cast<double>(f2), tolerance) << "B/A = " << r;
+      EXPECT_NEAR(shape.eccentricity_sq, static_cast<double>(e2), 4e-16 * static_cast<double>(e2)) << "B/A = " << r;
+    }
+  }
+}
+
 TEST(Hertz, RelativeCurvatureEqualsHalfTheEigenvaluesOfTheCurvatureTensorSum) {
   // The gap between two quadric surfaces is ½ xᵀ(C_I + C_J)x = A x² + B y², so A, B are half the
   // eigenvalues of the summed curvature tensors — an independent route to eq. (5).

@@ -72,17 +72,44 @@ double solve_axis_ratio_sq(double ratio) noexcept {
 // x^y for x ≥ 0, y > 0 (0 at x = 0): one exp and one log, a third of the cost of std::pow.
 double positive_power(double x, double y) noexcept { return x > 0.0 ? std::exp(y * std::log(x)) : 0.0; }
 
+// log(eˣ − 1) for 0 < x ≤ kSeriesLimit, given log x: log x + x/2 + log(sinh(x/2) / (x/2)), the
+// last term by its Taylor series Σ 2²ⁿ B₂ₙ y²ⁿ / (2n (2n)!) in y = x/2 (B₂ₙ Bernoulli numbers).
+// Through n = 7 the truncation is below 10⁻¹⁸ for y ≤ 1/4: the result is the direct
+// log(expm1(x)) to rounding, without the expm1 and the log of it.
+constexpr double kSeriesLimit = 0.5;
+double log_expm1_small(double x, double log_x) noexcept {
+  const double y2 = 0.25 * x * x;
+  const double series =
+      y2 * (1.0 / 6.0 +
+            y2 * (-1.0 / 180.0 +
+                  y2 * (1.0 / 2835.0 +
+                        y2 * (-1.0 / 37800.0 +
+                              y2 * (1.0 / 467775.0 + y2 * (-691.0 / 3831077250.0 + y2 * (2.0 / 127702575.0)))))));
+  return log_x + 0.5 * x + series;
+}
+
 HertzShape hale_shape(double equivalent_radius, double ratio) noexcept {
   // Eq. (4) and (7) as corrected in model-notes §1, with B/A ≥ 1:
   //   e² = 1 − (A/B)^{4/3},  f1 = 1 − ((B/A)^0.0602 − 1)^1.456,  f2 = 1 − ((B/A)^0.0684 − 1)^1.531.
-  // Every power of B/A shares one logarithm (a DEM evaluates this per contact and step), and
-  // expm1 keeps (B/A)^p − 1 exact near B/A = 1 where it is tiny.
+  // A DEM evaluates this per contact and step, so the transcendental calls are counted: every
+  // power of B/A shares one logarithm L, expm1 keeps (B/A)^p − 1 exact near B/A = 1, and for
+  // B/A up to e^{0.5/0.0684} ≈ 1500, ((B/A)^p − 1)^q = exp(q log(expm1(pL))) takes log(expm1(pL))
+  // from log L and a series (5 calls instead of 8; the same numbers to rounding, tested).
+  constexpr double kPower1 = 0.0602, kPower2 = 0.0684;
   const double log_ratio = std::log(ratio);
   HertzShape shape;
   shape.equivalent_radius = equivalent_radius;
   shape.eccentricity_sq = -std::expm1(-(4.0 / 3.0) * log_ratio);
-  shape.f1 = 1.0 - positive_power(std::expm1(0.0602 * log_ratio), 1.456);
-  shape.f2 = 1.0 - positive_power(std::expm1(0.0684 * log_ratio), 1.531);
+  if (log_ratio > 0.0 && kPower2 * log_ratio <= kSeriesLimit) {
+    const double log_log_ratio = std::log(log_ratio);
+    static const double log_power1 = std::log(kPower1);
+    static const double log_power2 = std::log(kPower2);
+    shape.f1 = 1.0 - std::exp(1.456 * log_expm1_small(kPower1 * log_ratio, log_power1 + log_log_ratio));
+    shape.f2 = 1.0 - std::exp(1.531 * log_expm1_small(kPower2 * log_ratio, log_power2 + log_log_ratio));
+  } else {
+    shape.f1 = 1.0 - positive_power(std::expm1(kPower1 * log_ratio), 1.456);
+    shape.f2 = 1.0 - positive_power(std::expm1(kPower2 * log_ratio), 1.531);
+  }
   return shape;
 }
 
