@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "ellc/engine/random.hpp"
+#include "ellc/engine/rigid_body.hpp"
 #include "ellc/engine/time_step.hpp"
 #include "ellc/geometry/narrow_phase.hpp"
 #include "ellc/law/contact_constants.hpp"
@@ -16,6 +17,22 @@ namespace {
 using testing::free_settings;
 using testing::kNmc;
 using testing::kScaledDensity;
+
+// The quaternion step is the rotation by |ω| dt about ω, to rounding, on both sides of the switch
+// from the Taylor series (every DEM step) to std::sin and std::cos (turns above 0.02 rad).
+TEST(RigidBody, OrientationStepIsTheExactRotation) {
+  Random random(5);
+  for (int sample = 0; sample < 2000; ++sample) {
+    const Eigen::Vector3d axis = Eigen::Vector3d(random.uniform(-1, 1), random.uniform(-1, 1), random.uniform(-1, 1)).normalized();
+    const double angle = std::pow(10.0, random.uniform(-9.0, -0.5));  // 10⁻⁹ … 0.3 rad in one step
+    const double dt = random.uniform(0.01, 1.0);
+    const Eigen::Quaterniond start(Eigen::AngleAxisd(random.uniform(0, 6.3), Eigen::Vector3d::UnitZ()) *
+                                   Eigen::AngleAxisd(random.uniform(0, 6.3), Eigen::Vector3d::UnitX()));
+    const Eigen::Quaterniond stepped = advance_orientation(start, axis * (angle / dt), dt);
+    const Eigen::Quaterniond exact = start * Eigen::Quaterniond(Eigen::AngleAxisd(angle, axis));
+    EXPECT_LT((stepped.coeffs() - exact.coeffs()).norm(), 4e-16) << "angle " << angle;
+  }
+}
 
 // A purely elastic sphere dropped on the bottom wall under gravity: kinetic + potential + the
 // Hertz energy stored in the contact stays constant through the bounce (velocity Verlet,

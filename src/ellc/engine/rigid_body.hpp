@@ -21,10 +21,20 @@ namespace ellc::engine {
                                                             double dt) noexcept {
   const double rate = omega.norm();
   const double half_angle = 0.5 * rate * dt;
-  // sin(θ/2)/|ω|, with its series where |ω| dt is tiny (no division by ~0).
-  const double scale = half_angle < 1e-6 ? 0.5 * dt * (1.0 - half_angle * half_angle / 6.0)
-                                         : std::sin(half_angle) / rate;
-  const Eigen::Quaterniond step(std::cos(half_angle), scale * omega.x(), scale * omega.y(), scale * omega.z());
+  // cos(θ/2) and sin(θ/2)/|ω| = (dt/2) sin(θ/2)/(θ/2). A DEM step turns a body by far less than
+  // 0.02 rad, where the Taylor series below are exact to rounding (the first omitted terms are
+  // below 10⁻²⁷) and cost a fraction of std::sin and std::cos, with no division by |ω| ~ 0.
+  double cosine = 0.0;
+  double scale = 0.0;
+  if (half_angle < 0.01) {
+    const double h2 = half_angle * half_angle;
+    cosine = 1.0 - h2 * (1.0 / 2.0 - h2 * (1.0 / 24.0 - h2 * (1.0 / 720.0 - h2 * (1.0 / 40320.0))));
+    scale = 0.5 * dt * (1.0 - h2 * (1.0 / 6.0 - h2 * (1.0 / 120.0 - h2 * (1.0 / 5040.0 - h2 * (1.0 / 362880.0)))));
+  } else {
+    cosine = std::cos(half_angle);
+    scale = std::sin(half_angle) / rate;
+  }
+  const Eigen::Quaterniond step(cosine, scale * omega.x(), scale * omega.y(), scale * omega.z());
   return (q * step).normalized();
 }
 
