@@ -50,6 +50,7 @@ Simulation::Simulation(const EngineSettings& settings, ParticleSet particles, co
   for (int wall = 0; wall < 2; ++wall) {
     wall_history_[wall].assign(count, ContactHistory{});
     wall_results_[wall].assign(count, WallResult{});
+    wall_reported_[wall].assign(count, 0);
   }
   skin_ = settings_.skin > 0.0 ? settings_.skin : default_skin(particles_, settings_.box);
   rebuild_neighbours();
@@ -111,6 +112,7 @@ void Simulation::rebuild_neighbours() {
   released_work_ += carry_over_history(pairs_, spare_pairs_);
   std::swap(pairs_, spare_pairs_);  // the old list's storage serves the next rebuild
   pair_results_.assign(pairs_.size(), PairResult{});
+  pair_reported_.assign(pairs_.size(), 0);
   index_pairs_by_particle();
   forget_proven_separations();
   reference_position_ = particles_.position;
@@ -224,11 +226,13 @@ void Simulation::evaluate_walls_and_reset(std::size_t slot) {
   const ResponseParameters parameters = response_parameters(settings_.contact.wall_friction);
   for (int w = 0; w < 2; ++w) {
     const Wall& wall = walls_[w];
+    std::uint8_t& reported = wall_reported_[w][slot];
+    const double reach = p.bounding_radius[slot] - wall.side * (p.position[slot].z() - wall.position);
+    if (reach <= 0.0 && reported == 0) continue;  // far from this wall and not in contact (most particles)
     ContactHistory& history = wall_history_[w][slot];
     WallResult& result = wall_results_[w][slot];
     result = WallResult{};
-    const double reach = p.bounding_radius[slot] - wall.side * (p.position[slot].z() - wall.position);
-    if (reach <= 0.0 && !history.active) continue;  // far from this wall (most particles): nothing to do
+    reported = 1;  // cleared below if the result stays empty
     PairSolution solution;
     if (reach > 0.0) {
       const BodyRef body{p.semi_axes[slot], p.position[slot], p.orientation[slot], p.mean_radius[slot], shape};
@@ -246,6 +250,7 @@ void Simulation::evaluate_walls_and_reset(std::size_t slot) {
         history.last_overlap = solution.overlap;
         result.contact = true;
       }
+      reported = holds_something(result) ? 1 : 0;
       continue;
     }
     history.active = true;
@@ -270,15 +275,14 @@ void Simulation::evaluate_walls_and_reset(std::size_t slot) {
 void Simulation::evaluate_pair(std::size_t index, const ResponseParameters& parameters) {
   auto& p = particles_;
   PairSlot& pair = pairs_[index];
-  PairResult& result = pair_results_[index];
-  result = PairResult{};
-  ContactHistory& history = pair.history;
+  pair_reported_[index] = 0;
   const std::uint32_t i = pair.i;
   const std::uint32_t j = pair.j;
-  const Eigen::Vector3d centre_j = p.position[j] + pair.shift;
-  const double reach = p.bounding_radius[i] + p.bounding_radius[j];
   const double travel = travel_[i] + travel_[j];
   if (travel < clearance_budget_[index]) return;  // proven apart: the test below would say so too
+  ContactHistory& history = pair.history;
+  const Eigen::Vector3d centre_j = p.position[j] + pair.shift;
+  const double reach = p.bounding_radius[i] + p.bounding_radius[j];
   PairSolution solution;
   const double distance_sq = (centre_j - p.position[i]).squaredNorm();
   if (distance_sq < reach * reach) {
@@ -295,12 +299,22 @@ void Simulation::evaluate_pair(std::size_t index, const ResponseParameters& para
   } else {
     solution.clearance = std::sqrt(distance_sq) - reach;  // bounding spheres apart
   }
+  PairResult& result = pair_results_[index];
   if (solution.status == PairStatus::failed) {
+    result = PairResult{};
     result.failed = true;
+    pair_reported_[index] = 1;
     return;
   }
   if (solution.status == PairStatus::separated) {
-    if (history.active) result.released_work = clear_history(history);
+    if (history.active) {
+      const double released = clear_history(history);
+      if (released != 0.0) {
+        result = PairResult{};
+        result.released_work = released;
+        pair_reported_[index] = 1;
+      }
+    }
     // Margin: the clearance itself carries rounding of a few ulp of the bodies' size.
     const double usable = solution.clearance - 1e-12 * reach;
     if (settings_.skip_proven_separated && usable > 0.0) clearance_budget_[index] = travel + usable;
@@ -309,6 +323,8 @@ void Simulation::evaluate_pair(std::size_t index, const ResponseParameters& para
   history.active = true;
   history.max_overlap = solution.law.max_overlap;
   history.last_overlap = solution.overlap;
+  result = PairResult{};
+  pair_reported_[index] = 1;
   result.contact = true;
   result.regime = solution.law.regime;
   if (solution.law.regime == Regime::separated) return;  // overlapping below δ_p: no force
@@ -337,6 +353,7 @@ void Simulation::accumulate() {
   for (int w = 0; w < 2; ++w) {
     const auto& results = wall_results_[w];
     for (std::size_t slot = 0; slot < results.size(); ++slot) {
+      if (wall_reported_[w][slot] == 0) continue;
       walls_[w].force += results[slot].force_on_wall;
       released_work_ += results[slot].released_work;
       failures_ += results[slot].failed ? 1U : 0U;
@@ -349,6 +366,7 @@ void Simulation::accumulate() {
     Eigen::Vector3d torque = p.torque[slot];
     for (std::uint32_t k = pairs_of_particle_start_[slot]; k < pairs_of_particle_start_[slot + 1]; ++k) {
       const std::uint32_t entry = pairs_of_particle_[k];
+      if (pair_reported_[entry >> 1U] == 0) continue;
       const PairResult& result = pair_results_[entry >> 1U];
       if (!result.contact) continue;
       if ((entry & 1U) == 0U) {
@@ -370,6 +388,7 @@ void Simulation::accumulate() {
   for (std::size_t chunk = 0; chunk < chunks; ++chunk) {
     double released = 0.0;
     for (std::size_t index = chunk * kChunk; index < std::min(pairs_.size(), (chunk + 1) * kChunk); ++index) {
+      if (pair_reported_[index] == 0) continue;
       released += pair_results_[index].released_work;
       failures += pair_results_[index].failed ? 1U : 0U;
     }
@@ -427,16 +446,16 @@ double Simulation::contact_elastic_energy() const noexcept {
 
 ContactCounts Simulation::contact_counts() const noexcept {
   ContactCounts counts;
-  for (const auto& result : pair_results_) {
-    if (!result.contact) continue;
+  for (std::size_t index = 0; index < pair_results_.size(); ++index) {
+    if (pair_reported_[index] == 0 || !pair_results_[index].contact) continue;
     ++counts.particle_contacts;
-    ++counts.by_regime[static_cast<std::size_t>(result.regime)];
+    ++counts.by_regime[static_cast<std::size_t>(pair_results_[index].regime)];
   }
-  for (const auto& results : wall_results_)
-    for (const auto& result : results) {
-      if (!result.contact) continue;
+  for (int w = 0; w < 2; ++w)
+    for (std::size_t slot = 0; slot < wall_results_[w].size(); ++slot) {
+      if (wall_reported_[w][slot] == 0 || !wall_results_[w][slot].contact) continue;
       ++counts.wall_contacts;
-      ++counts.by_regime[static_cast<std::size_t>(result.regime)];
+      ++counts.by_regime[static_cast<std::size_t>(wall_results_[w][slot].regime)];
     }
   counts.narrow_phase_failures = failures_;
   return counts;
@@ -453,7 +472,8 @@ double Simulation::porosity() const noexcept {
 
 std::size_t Simulation::wall_contact_count(int wall) const noexcept {
   std::size_t count = 0;
-  for (const auto& result : wall_results_[wall]) count += result.contact ? 1U : 0U;
+  for (std::size_t slot = 0; slot < wall_results_[wall].size(); ++slot)
+    count += wall_reported_[wall][slot] != 0 && wall_results_[wall][slot].contact ? 1U : 0U;
   return count;
 }
 

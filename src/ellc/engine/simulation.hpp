@@ -105,6 +105,14 @@ class Simulation {
     bool contact = false;
     bool failed = false;
   };
+  // A result slot is only written when this step has something to say (a contact, released
+  // plastic work, a failure); a byte per slot (1 = written this step) says which slots are
+  // current, so that the many empty ones are neither cleared nor read every step (the clearing
+  // store alone missed the cache for ~2 % of a DEM step's cycles).
+  template <typename Result>
+  [[nodiscard]] static bool holds_something(const Result& result) noexcept {
+    return result.contact || result.failed || result.released_work != 0.0;
+  }
 
   template <typename Io, typename Self>
   static void state_fields(Io& io, Self& self);  // simulation_state.cpp
@@ -142,12 +150,17 @@ class Simulation {
   std::vector<PairSlot> pairs_;
   std::vector<PairSlot> spare_pairs_;  // storage for the next rebuild's list (no state)
   std::vector<PairResult> pair_results_;
+  std::vector<std::uint8_t> pair_reported_;  // 1: pair_results_[k] is this step's; 0: empty
   // The pairs of each particle in pair-list order (CSR): entry = 2 × pair index + (particle is j).
   std::vector<std::uint32_t> pairs_of_particle_start_;
   std::vector<std::uint32_t> pairs_of_particle_;
   std::vector<double> chunk_released_work_;
   std::array<std::vector<ContactHistory>, 2> wall_history_;  // per particle slot
   std::array<std::vector<WallResult>, 2> wall_results_;
+  // 1: wall_results_[w][slot] is this step's; 0: empty, and then the wall contact is not active
+  // (every step that leaves a wall history active reports it), so a particle far from the wall
+  // is passed over without reading its history.
+  std::array<std::vector<std::uint8_t>, 2> wall_reported_;
   double skin_ = 0.0;
   double released_work_ = 0.0;  // plastic work of deleted contacts
   std::uint64_t failures_ = 0;

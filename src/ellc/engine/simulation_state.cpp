@@ -110,13 +110,30 @@ void Simulation::state_fields(Io& io, Self& self) {
     io(result.contact);
     io(result.failed);
   };
+  // Slots not written this step are stored as empty results; reading marks the slots that hold
+  // something as written (holds_something), which is what the step that wrote them had set.
+  const auto results = [](auto& stored, auto& reported, auto&& one) {
+    using Result = std::decay_t<decltype(stored[0])>;
+    for (std::size_t k = 0; k < stored.size(); ++k) {
+      if constexpr (std::is_same_v<Io, Reader>) {
+        one(stored[k]);
+        reported[k] = holds_something(stored[k]) ? 1 : 0;
+      } else {
+        Result copy = reported[k] != 0 ? stored[k] : Result{};
+        one(copy);
+      }
+    }
+  };
   if constexpr (std::is_same_v<Io, Reader>) {
     self.pair_results_.assign(self.pairs_.size(), PairResult{});
-    for (auto& results : self.wall_results_) results.assign(p.size(), WallResult{});
+    self.pair_reported_.assign(self.pairs_.size(), 0);
+    for (int w = 0; w < 2; ++w) {
+      self.wall_results_[w].assign(p.size(), WallResult{});
+      self.wall_reported_[w].assign(p.size(), 0);
+    }
   }
-  for (auto& result : self.pair_results_) pair_result(result);
-  for (auto& results : self.wall_results_)
-    for (auto& result : results) wall_result(result);
+  results(self.pair_results_, self.pair_reported_, pair_result);
+  for (int w = 0; w < 2; ++w) results(self.wall_results_[w], self.wall_reported_[w], wall_result);
 }
 
 void Simulation::write_state(std::ostream& out) const {
