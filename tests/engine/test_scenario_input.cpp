@@ -65,6 +65,15 @@ TEST(EngineScenarioInput, BadValuesAreNamed) {
   }
 }
 
+// [settle] max_time: 0 means the default 3 × time, as documented; a positive value below time is
+// refused with the field named.
+TEST(EngineScenarioInput, SettleMaxTimeZeroIsTheDefault) {
+  const std::string zero = replace_line(quick_scenario_text(), "time = 0.0", "time = 10.0\nmax_time = 0.0");
+  EXPECT_EQ(quick_scenario(zero).settle.max_time, 30.0);
+  const std::string short_max = replace_line(quick_scenario_text(), "time = 0.0", "time = 10.0\nmax_time = 5.0");
+  EXPECT_NE(input_error([&] { (void)quick_scenario(short_max); }).find("settle.max_time"), std::string::npos);
+}
+
 TEST(EngineScenarioInput, TimeStepAboveEstimateNeedsForce) {
   const std::string text = replace_line(quick_scenario_text(), "safety", "safety = 0.2\ndt = 1.0");
   const Scenario scenario = quick_scenario(text);

@@ -99,8 +99,10 @@ void read_settle(TableReader& table, SettleSpec& settle) {
   settle.gravity = non_negative_or(table, "gravity", settle.gravity);
   settle.drag_rate = non_negative_or(table, "drag_rate", settle.drag_rate);
   settle.time = non_negative_or(table, "time", settle.time);
-  settle.max_time = non_negative_or(table, "max_time", 3.0 * settle.time);
-  if (settle.max_time < settle.time) table.fail("max_time", settle.max_time, "a time >= settle.time (µs)");
+  settle.max_time = non_negative_or(table, "max_time", 0.0);
+  if (settle.max_time == 0.0) settle.max_time = 3.0 * settle.time;  // 0 or absent: the default (scenario.hpp)
+  if (settle.max_time < settle.time)
+    table.fail("max_time", settle.max_time, "a time >= settle.time (µs), or 0 for 3 x settle.time");
   settle.speed_tolerance = positive_or(table, "speed_tolerance", settle.speed_tolerance);
   table.finish();
 }
