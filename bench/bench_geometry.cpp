@@ -161,6 +161,17 @@ void BM_NarrowPhaseWarm(benchmark::State& state) {
 }
 BENCHMARK(BM_NarrowPhaseWarm);
 
+// The same warm starts with the DEM engine's options: one Newton step (final_step 1e-3) and A, B
+// without the per-side curvatures, directions and α (EngineSettings::narrow_phase_final_step).
+constexpr NarrowPhaseOptions kEngineOptions{1e-3, false};
+
+void BM_NarrowPhaseWarmEngineOptions(benchmark::State& state) {
+  const Pool& p = pool();
+  run_against_spheres(state, p,
+                      [&p](std::size_t k) { return ellipsoid_contact(p.body_i[k], p.body_j[k], &p.warm[k], kEngineOptions); });
+}
+BENCHMARK(BM_NarrowPhaseWarmEngineOptions);
+
 void BM_NarrowPhaseWarmLargeStep(benchmark::State& state) {
   const Pool& p = stale_pool();
   run_against_spheres(state, p, [&p](std::size_t k) { return ellipsoid_contact(p.body_i[k], p.body_j[k], &p.warm[k]); });

@@ -144,28 +144,37 @@ TEST(NarrowPhase, SwappingIAndJChangesNothing) {
   }
 }
 
-TEST(NarrowPhase, WarmStartFollowsAMovingContact) {
-  Rng rng(14);
+// 200 random contacts, each followed for 20 steps in which J moves by 10⁻³ and turns by `turn`
+// rad: `solve(i, j, previous)` returns the new result, which becomes `previous` for the next step.
+template <typename Solve>
+void follow_moving_contacts(std::uint64_t seed, double turn, Solve&& solve) {
+  Rng rng(seed);
   for (int sample = 0; sample < 200; ++sample) {
     Pair pair = random_pair(rng, 0.05);
     NarrowPhaseResult previous = ellipsoid_contact(pair.i, pair.j);
     ASSERT_EQ(previous.status, NarrowPhaseStatus::contact);
     const Eigen::Vector3d velocity = 1e-3 * test::random_unit(rng);
-    const Eigen::Quaterniond spin(Eigen::AngleAxisd(1e-3, test::random_unit(rng)));
+    const Eigen::Quaterniond spin(Eigen::AngleAxisd(turn, test::random_unit(rng)));
     for (int step = 0; step < 20; ++step) {
       pair.j = Ellipsoid(pair.j.semi_axes(), {pair.j.center() + velocity, spin * pair.j.pose().orientation});
-      const NarrowPhaseResult warm = ellipsoid_contact(pair.i, pair.j, &previous.warm_start);
-      const NarrowPhaseResult cold = ellipsoid_contact(pair.i, pair.j);
-      ASSERT_EQ(warm.status, cold.status);
-      EXPECT_FALSE(warm.cold_start);
-      EXPECT_LE(warm.iterations, 3);
-      EXPECT_NEAR(warm.geometry.overlap, cold.geometry.overlap, 1e-12);
-      if (warm.status == NarrowPhaseStatus::contact) {
-        EXPECT_LT((warm.geometry.normal - cold.geometry.normal).norm(), 1e-10);
-      }
-      previous = warm;
+      previous = solve(pair.i, pair.j, previous);
     }
   }
+}
+
+TEST(NarrowPhase, WarmStartFollowsAMovingContact) {
+  follow_moving_contacts(14, 1e-3, [](const Ellipsoid& i, const Ellipsoid& j, const NarrowPhaseResult& previous) {
+    const NarrowPhaseResult warm = ellipsoid_contact(i, j, &previous.warm_start);
+    const NarrowPhaseResult cold = ellipsoid_contact(i, j);
+    EXPECT_EQ(warm.status, cold.status);
+    EXPECT_FALSE(warm.cold_start);
+    EXPECT_LE(warm.iterations, 3);
+    EXPECT_NEAR(warm.geometry.overlap, cold.geometry.overlap, 1e-12);
+    if (warm.status == NarrowPhaseStatus::contact) {
+      EXPECT_LT((warm.geometry.normal - cold.geometry.normal).norm(), 1e-10);
+    }
+    return warm;
+  });
 }
 
 TEST(NarrowPhase, SeparatedPairsGiveASeparatingAxis) {
@@ -245,32 +254,23 @@ TEST(NarrowPhase, RelativeCurvatureIsEquationFiveOfTheSides) {
 // curvatures are skipped, A and B are not.
 TEST(NarrowPhase, TimeSteppingOptionsStayCloseToTheSolveToRounding) {
   constexpr NarrowPhaseOptions kEngineOptions{1e-3, false};  // the DEM engine's defaults (settings.hpp)
-  Rng rng(19);
   int solves = 0;
   int newton_steps = 0;
-  for (int sample = 0; sample < 200; ++sample) {
-    Pair pair = random_pair(rng, 0.05);
-    NarrowPhaseResult previous = ellipsoid_contact(pair.i, pair.j);
-    ASSERT_EQ(previous.status, NarrowPhaseStatus::contact);
-    const Eigen::Vector3d velocity = 1e-3 * test::random_unit(rng);
-    const Eigen::Quaterniond spin(Eigen::AngleAxisd(3e-4, test::random_unit(rng)));
-    for (int step = 0; step < 20; ++step) {
-      pair.j = Ellipsoid(pair.j.semi_axes(), {pair.j.center() + velocity, spin * pair.j.pose().orientation});
-      const NarrowPhaseResult fast = ellipsoid_contact(pair.i, pair.j, &previous.warm_start, kEngineOptions);
-      const NarrowPhaseResult exact = ellipsoid_contact(pair.i, pair.j);
-      ASSERT_EQ(fast.status, exact.status);
-      previous = fast;
-      if (fast.status != NarrowPhaseStatus::contact) continue;
-      ++solves;
-      newton_steps += fast.iterations;
-      const double scale = pair.i.bounding_radius() + pair.j.bounding_radius();
-      EXPECT_LT((fast.geometry.normal - exact.geometry.normal).norm(), 3e-6);
-      EXPECT_NEAR(fast.geometry.overlap, exact.geometry.overlap, 1e-12 * scale);
-      EXPECT_NEAR(fast.geometry.relative.a_sum, exact.geometry.relative.a_sum, 1e-5 * exact.geometry.relative.b_sum);
-      EXPECT_NEAR(fast.geometry.relative.b_sum, exact.geometry.relative.b_sum, 1e-5 * exact.geometry.relative.b_sum);
-      EXPECT_EQ(fast.geometry.curvature_i.kappa_1, 0.0);  // skipped
-    }
-  }
+  follow_moving_contacts(19, 3e-4, [&](const Ellipsoid& i, const Ellipsoid& j, const NarrowPhaseResult& previous) {
+    const NarrowPhaseResult fast = ellipsoid_contact(i, j, &previous.warm_start, kEngineOptions);
+    const NarrowPhaseResult exact = ellipsoid_contact(i, j);
+    EXPECT_EQ(fast.status, exact.status);
+    if (fast.status != NarrowPhaseStatus::contact || exact.status != NarrowPhaseStatus::contact) return fast;
+    ++solves;
+    newton_steps += fast.iterations;
+    const double scale = i.bounding_radius() + j.bounding_radius();
+    EXPECT_LT((fast.geometry.normal - exact.geometry.normal).norm(), 3e-6);
+    EXPECT_NEAR(fast.geometry.overlap, exact.geometry.overlap, 1e-12 * scale);
+    EXPECT_NEAR(fast.geometry.relative.a_sum, exact.geometry.relative.a_sum, 1e-5 * exact.geometry.relative.b_sum);
+    EXPECT_NEAR(fast.geometry.relative.b_sum, exact.geometry.relative.b_sum, 1e-5 * exact.geometry.relative.b_sum);
+    EXPECT_EQ(fast.geometry.curvature_i.kappa_1, 0.0);  // skipped
+    return fast;
+  });
   ASSERT_GT(solves, 1000);
   EXPECT_LT(newton_steps, 1.2 * solves) << "about one Newton step per time step";
 }
