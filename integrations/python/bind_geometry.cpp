@@ -92,6 +92,7 @@ void bind_geometry(py::module_& module) {
       .def_readonly("overlap", &ContactGeometry::overlap, "delta = (p_I - p_J).n; > 0 in contact.")
       .def_readonly("surface_point_i", &ContactGeometry::surface_point_i)
       .def_readonly("surface_point_j", &ContactGeometry::surface_point_j)
+      .def_readonly("relative", &ContactGeometry::relative, "A and B of eq. (5): what the law uses.")
       .def_readonly("curvature_i", &ContactGeometry::curvature_i)
       .def_readonly("curvature_j", &ContactGeometry::curvature_j)
       .def_readonly("alpha", &ContactGeometry::alpha, "Angle between the kappa_1 directions, in [0, pi/2].");

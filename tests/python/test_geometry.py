@@ -45,6 +45,11 @@ def test_separated_rotated_pair_and_warm_start():
     again = ellc.ellipsoid_contact(body_i, near, warm_start=first.warm_start)
     assert again.geometry.overlap == pytest.approx(first.geometry.overlap, rel=1e-12)
     assert not again.cold_start
+    # A, B (what the law uses) are eq. (5) of the reported sides: here α = 90°.
+    g = first.geometry
+    eq5 = ellc.relative_curvature(g.curvature_i.principal(), g.curvature_j.principal(), g.alpha)
+    assert g.relative.a_sum == pytest.approx(eq5.a_sum, rel=1e-12)
+    assert g.relative.b_sum == pytest.approx(eq5.b_sum, rel=1e-12)
 
 
 def test_wall_contact_and_bad_input():
