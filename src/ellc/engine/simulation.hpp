@@ -56,7 +56,6 @@ class Simulation {
   void step();
 
   [[nodiscard]] const ParticleSet& particles() const noexcept { return particles_; }
-  [[nodiscard]] ParticleSet& particles() noexcept { return particles_; }
   [[nodiscard]] const std::array<Wall, 2>& walls() const noexcept { return walls_; }
   // Wall motion is prescribed: the protocol sets velocities (and may place a wall between steps).
   void set_wall_velocity(int wall, double velocity) noexcept { walls_[wall].velocity = velocity; }
