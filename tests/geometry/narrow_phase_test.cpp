@@ -222,17 +222,6 @@ TEST(NarrowPhase, OverlapAlongAnAxisIsBoundedByTheCommonNormal) {
   }
 }
 
-// cos 2α is carried beside α so that eq. (5) needs no cos; both must describe the same angle.
-TEST(NarrowPhase, CosTwoAlphaMatchesAlpha) {
-  Rng rng(17);
-  for (int sample = 0; sample < 1000; ++sample) {
-    const Pair pair = random_pair(rng, test::uniform(rng, 0.01, 0.3));
-    const NarrowPhaseResult result = ellipsoid_contact(pair.i, pair.j);
-    if (result.status != NarrowPhaseStatus::contact) continue;
-    EXPECT_NEAR(result.geometry.cos_two_alpha, std::cos(2.0 * result.geometry.alpha), 1e-14);
-  }
-}
-
 // A, B come from the summed curvature tensors; they must be eq. (5) of the two sides' own
 // principal curvatures and α, which the narrow phase reports beside them.
 TEST(NarrowPhase, RelativeCurvatureIsEquationFiveOfTheSides) {

@@ -23,7 +23,6 @@ void pair_principal_directions(ContactGeometry& geometry, const Eigen::Vector3d&
   SurfaceCurvature& side_i = geometry.curvature_i;
   SurfaceCurvature& side_j = geometry.curvature_j;
   geometry.alpha = 0.0;
-  geometry.cos_two_alpha = 1.0;
   if (side_i.umbilic()) {
     adopt_directions(side_i, side_j, normal);
     return;
@@ -35,8 +34,6 @@ void pair_principal_directions(ContactGeometry& geometry, const Eigen::Vector3d&
   const double cosine = std::abs(side_i.direction_1.dot(side_j.direction_1));
   const double sine = side_i.direction_1.cross(side_j.direction_1).norm();
   if (cosine == 0.0 && sine == 0.0) return;  // degenerate directions: α = 0
-  // cos 2α = (cos² − sin²)/(cos² + sin²): the division absorbs the rounding of |d1| = 1.
-  geometry.cos_two_alpha = (cosine - sine) * (cosine + sine) / (cosine * cosine + sine * sine);
   // atan2(sine, cosine) for sine, cosine ≥ 0, via atan on a ratio ≤ 1 (cheaper than atan2).
   geometry.alpha = sine <= cosine ? std::atan(sine / cosine) : 0.5 * std::numbers::pi - std::atan(cosine / sine);
 }

@@ -21,7 +21,6 @@ struct ContactGeometry {
   SurfaceCurvature curvature_i;  // of I at surface_point_i
   SurfaceCurvature curvature_j;  // of J at surface_point_j (zero for a wall)
   double alpha = 0.0;            // angle between the κ1 directions of I and J, in [0, π/2]
-  double cos_two_alpha = 1.0;    // cos 2α (computed without a cos)
 };
 
 // The angle α ∈ [0, π/2] between the κ1 directions (principal directions are lines, so α and
@@ -30,7 +29,7 @@ struct ContactGeometry {
 // side takes the other side's directions (projected on its own tangent plane) and α = 0. Eq. (5)
 // weights α by κ1 − κ2 of each side, so this choice changes A and B by nothing, and α never
 // jumps with the rounding noise of a tangent frame. `normal` is the outward normal of side I.
-// Sets geometry.alpha and geometry.cos_two_alpha (and may turn an umbilic side's directions).
+// Sets geometry.alpha (and may turn an umbilic side's directions).
 void pair_principal_directions(ContactGeometry& geometry, const Eigen::Vector3d& normal) noexcept;
 
 }  // namespace ellc

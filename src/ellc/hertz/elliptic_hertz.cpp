@@ -135,11 +135,7 @@ HertzShape exact_shape(double equivalent_radius, double ratio) noexcept {
 }  // namespace
 
 RelativeCurvature relative_curvature(PrincipalCurvatures body_i, PrincipalCurvatures body_j, double alpha) noexcept {
-  return relative_curvature_from_cos(body_i, body_j, std::cos(2.0 * alpha));
-}
-
-RelativeCurvature relative_curvature_from_cos(PrincipalCurvatures body_i, PrincipalCurvatures body_j,
-                                              double cos_two_alpha) noexcept {
+  const double cos_two_alpha = std::cos(2.0 * alpha);
   const double sum = 0.5 * (body_i.kappa_1 + body_i.kappa_2 + body_j.kappa_1 + body_j.kappa_2);
   const double split_i = body_i.kappa_1 - body_i.kappa_2;
   const double split_j = body_j.kappa_1 - body_j.kappa_2;

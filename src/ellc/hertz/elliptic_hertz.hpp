@@ -43,9 +43,6 @@ struct HertzContact {
 // `alpha` is the angle between the κ1 directions of the two bodies.
 [[nodiscard]] RelativeCurvature relative_curvature(PrincipalCurvatures body_i, PrincipalCurvatures body_j,
                                                    double alpha) noexcept;
-// The same from cos 2α directly, for callers that hold it.
-[[nodiscard]] RelativeCurvature relative_curvature_from_cos(PrincipalCurvatures body_i, PrincipalCurvatures body_j,
-                                                            double cos_two_alpha) noexcept;
 // Eq. (5) in tensor form, for callers holding both bodies' curvature tensors (shape operators) in
 // one tangent frame: their sum W has eigenvalues 2A and 2B. With W_k = R(θ_k) diag(κ1^k, κ2^k) R(θ_k)ᵀ
 // and α = θ_I − θ_J, tr W = Σκ and (W₁₁ − W₂₂)² + 4 W₁₂² = Δ_I² + Δ_J² + 2 Δ_I Δ_J cos 2α, so this is
