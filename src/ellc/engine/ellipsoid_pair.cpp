@@ -68,8 +68,11 @@ PairSolution solve_ellipsoid_pair(const BodyRef& body_i, const BodyRef& body_j, 
                                   const NormalContext& context) noexcept {
   // Apart last step, and last step's separating axis still separates: no narrow phase. Most
   // candidate pairs of a dense packing are such near misses. (Images of J share its shape S_J.)
+  // A sphere meeting an ellipsoid (shape null) re-solves and re-stores its warm start every step
+  // instead; it reports no clearance either, since skipping it would skip that update.
+  const bool shortcut = body_i.shape != nullptr && body_j.shape != nullptr;
   const WarmStart& axis = history.warm_start;
-  if (!history.active && axis.valid && body_i.shape != nullptr && body_j.shape != nullptr) {
+  if (shortcut && !history.active && axis.valid) {
     const double overlap = overlap_along(*body_i.shape, *body_j.shape, body_j.centre - body_i.centre,
                                          Eigen::Vector3d(axis.values[0], axis.values[1], axis.values[2]));
     if (overlap < 0.0) {
@@ -85,7 +88,9 @@ PairSolution solve_ellipsoid_pair(const BodyRef& body_i, const BodyRef& body_j, 
     });
   });
   if (found.status != NarrowPhaseStatus::failed) history.warm_start = from_geometry(found.warm_start);
-  return with_law(found, body_i.mean_radius + body_j.mean_radius, history, context);
+  PairSolution solution = with_law(found, body_i.mean_radius + body_j.mean_radius, history, context);
+  if (!shortcut) solution.clearance = 0.0;
+  return solution;
 }
 
 PairSolution solve_ellipsoid_wall(const BodyRef& body, const Wall& wall, ContactHistory& history,

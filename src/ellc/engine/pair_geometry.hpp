@@ -21,8 +21,9 @@ struct PairSolution {
   Eigen::Vector3d normal = Eigen::Vector3d::UnitZ();  // unit, I → J (particle → wall for walls)
   Eigen::Vector3d point = Eigen::Vector3d::Zero();    // where the contact forces act
   double overlap = 0.0;
-  // Separated: a clearance the bodies are proven apart by along one fixed axis (the bodies stay
-  // apart while their points move less than this in total); 0 when none is known.
+  // Separated: a clearance the bodies are proven apart by along one fixed axis (they stay apart
+  // while their points move less than this in total), given only where re-testing the pair in
+  // that time would change nothing (the engine then skips it); 0 otherwise.
   double clearance = 0.0;
   LawResult law;
   const ContactConstants* constants = nullptr;  // points into the history (valid while it lives)

@@ -96,7 +96,7 @@ void Simulation::index_pairs_by_particle() {
 std::size_t Simulation::pairs_proven_apart() const noexcept {
   std::size_t count = 0;
   for (std::size_t index = 0; index < pairs_.size(); ++index)
-    count += travel_[pairs_[index].i] + travel_[pairs_[index].j] < clearance_budget_[index] ? 1U : 0U;
+    count += proven_apart(index, travel_[pairs_[index].i] + travel_[pairs_[index].j]) ? 1U : 0U;
   return count;
 }
 
@@ -279,7 +279,7 @@ void Simulation::evaluate_pair(std::size_t index, const ResponseParameters& para
   const std::uint32_t i = pair.i;
   const std::uint32_t j = pair.j;
   const double travel = travel_[i] + travel_[j];
-  if (travel < clearance_budget_[index]) return;  // proven apart: the test below would say so too
+  if (proven_apart(index, travel)) return;  // the test below would find the pair apart too
   ContactHistory& history = pair.history;
   const Eigen::Vector3d centre_j = p.position[j] + pair.shift;
   const double reach = p.bounding_radius[i] + p.bounding_radius[j];
@@ -293,9 +293,6 @@ void Simulation::evaluate_pair(std::size_t index, const ResponseParameters& para
     const BodyRef body_j{p.semi_axes[j], centre_j, p.orientation[j], p.mean_radius[j],
                          is_sphere_[j] == 0 ? &shapes_[j] : nullptr};
     solution = solve_pair(body_i, body_j, is_sphere_[i] != 0 && is_sphere_[j] != 0, history, normal_context_);
-    // A sphere meeting an ellipsoid re-solves (and re-stores its warm start) every step: only
-    // the bounding-sphere clearance below may skip it, or skipping would change its history.
-    if (is_sphere_[i] != is_sphere_[j]) solution.clearance = 0.0;
   } else {
     solution.clearance = std::sqrt(distance_sq) - reach;  // bounding spheres apart
   }

@@ -118,6 +118,9 @@ class Simulation {
   void prepare_derived_arrays();                 // sphere flags, body frames, pair index: from the state
   void index_pairs_by_particle();
   void forget_proven_separations();
+  [[nodiscard]] bool proven_apart(std::size_t pair_index, double travel) const noexcept {
+    return travel < clearance_budget_[pair_index];
+  }
   void rebuild_neighbours();
   void refresh_body_frames() noexcept;
   void refresh_body_frame(std::size_t slot) noexcept;
