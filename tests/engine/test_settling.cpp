@@ -41,12 +41,13 @@ std::string settling_scenario_text() {
   return replace_line(text, "time = 0.0", settle);  // the [settle] table's only line
 }
 
-// Half the z extent of a posed ellipsoid: its surface spans z ± |diag(a, b, c) u|, u = Rᵀ e_z.
-// (The bounding radius, the largest semi-axis, would be wrong by up to a factor 2 for a flat-lying
-// ellipsoid, and hide a particle sunk into the floor.)
+// Half the z extent of a posed ellipsoid, from the geometry layer's tight bounds. (The bounding
+// radius, the largest semi-axis, would be wrong by up to a factor 2 for a flat-lying ellipsoid,
+// and hide a particle sunk into the floor.)
 double half_height(const ParticleSet& p, std::size_t slot) {
-  const Eigen::Vector3d u = p.orientation[slot].conjugate() * Eigen::Vector3d::UnitZ();
-  return p.semi_axes[slot].cwiseProduct(u).norm();
+  const Ellipsoid posed(p.semi_axes[slot], Pose{p.position[slot], p.orientation[slot]});
+  const AxisAlignedBox bounds = posed.axis_aligned_bounds();
+  return 0.5 * (bounds.upper.z() - bounds.lower.z());
 }
 
 struct Layer {
