@@ -18,6 +18,10 @@ MESH_LEVELS = {
     "coarse": (0.03, 0.35, 0.25),
     "medium": (0.015, 0.22, 0.18),
     "fine": (0.008, 0.15, 0.12),
+    # Ductile materials: the contact radius at first yield is ~0.1 um for r = 10 um, so the
+    # contact size is cut 5x below "medium"; the element count grows only ~ log(1/h0).
+    "ductile": (0.003, 0.22, 0.18),
+    "ductile_fine": (0.0015, 0.15, 0.12),
 }
 
 # gmsh 10-node tetrahedron -> CalculiX C3D10: swap the 9th and 10th node (edges 3-4 and 2-4).
