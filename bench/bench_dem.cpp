@@ -15,12 +15,13 @@
 #include <cstdlib>
 #include <memory>
 
-#include "ellc/engine/packing.hpp"
+#include "ellc/scenario/packing.hpp"
 #include "ellc/engine/simulation.hpp"
 #include "ellc/engine/time_step.hpp"
 
 namespace {
 
+using namespace ellc;
 using namespace ellc::engine;
 
 std::size_t particle_count() {
@@ -70,8 +71,8 @@ ParticleSet as_spheres(const ParticleSet& source, double density) {
 EngineSettings bench_settings(bool spheres, const ParticleSet& particles, const Box& box) {
   EngineSettings settings;
   settings.contact.material = {142000.0, 0.25, 7900.0};
-  settings.contact.normal_model = spheres ? NormalModel::hertz : NormalModel::becker_kamlah;
-  settings.contact.damping_ratio = 0.3;
+  settings.contact.model.normal = spheres ? NormalModel::hertz : NormalModel::becker_kamlah;
+  settings.contact.model.normal_damping = settings.contact.model.tangential_damping = 0.3;
   settings.box = box;
   settings.dt = stable_time_step(particles, kDensity, settings.contact.material);
   settings.drag_rate = 0.5;

@@ -20,7 +20,7 @@
 #include <vector>
 
 #include "ellc/geometry/narrow_phase.hpp"
-#include "ellc/geometry/normal_contact.hpp"
+#include "ellc/contact/normal_contact.hpp"
 #include "ellc/geometry/wall_contact.hpp"
 
 namespace {

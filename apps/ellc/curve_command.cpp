@@ -10,9 +10,9 @@
 
 #include "command_registry.hpp"
 #include "ellc/geometry/tip_contact.hpp"
-#include "ellc/io/case_file.hpp"
+#include "ellc/cases/case_file.hpp"
 #include "ellc/io/input_error.hpp"
-#include "ellc/io/protocol.hpp"
+#include "ellc/cases/protocol.hpp"
 #include "ellc/law/contact_patch.hpp"
 #include "ellc/law/overlap_path.hpp"
 #include "plot_runner.hpp"

@@ -19,7 +19,7 @@
 #endif
 
 #include "command_registry.hpp"
-#include "ellc/engine/scenario_runner.hpp"
+#include "ellc/scenario/scenario_runner.hpp"
 #include "plot_runner.hpp"
 
 namespace ellc::cli {

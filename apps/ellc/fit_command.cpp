@@ -12,7 +12,7 @@
 #include "command_registry.hpp"
 #include "ellc/calibration/calibration_output.hpp"
 #include "ellc/calibration/transition_calibration.hpp"
-#include "ellc/io/case_file.hpp"
+#include "ellc/cases/case_file.hpp"
 #include "ellc/io/input_error.hpp"
 #include "ellc/io/table_reader.hpp"
 #include "plot_runner.hpp"

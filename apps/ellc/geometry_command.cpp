@@ -22,9 +22,9 @@
 
 #include "command_registry.hpp"
 #include "ellc/geometry/narrow_phase.hpp"
-#include "ellc/geometry/normal_contact.hpp"
+#include "ellc/contact/normal_contact.hpp"
 #include "ellc/geometry/wall_contact.hpp"
-#include "ellc/io/case_file.hpp"
+#include "ellc/cases/case_file.hpp"
 #include "ellc/io/input_error.hpp"
 
 namespace ellc::cli {

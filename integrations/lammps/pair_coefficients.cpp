@@ -4,6 +4,8 @@
 #include <cmath>
 #include <string_view>
 
+#include "ellc/contact/contact_parameters.hpp"
+
 namespace ellc_lammps {
 
 namespace {
@@ -16,11 +18,6 @@ std::optional<double> to_number(const std::string& word) {
   return value;
 }
 
-std::string check_non_negative(const char* name, double value) {
-  if (std::isfinite(value) && value >= 0.0) return {};
-  return std::string(name) + " = " + std::to_string(value) + ": expected a finite number >= 0";
-}
-
 bool same_law(const ellc::LawParameters& x, const ellc::LawParameters& y) {
   const auto& f = x.fit;
   const auto& g = y.fit;
@@ -28,6 +25,11 @@ bool same_law(const ellc::LawParameters& x, const ellc::LawParameters& y) {
          f.lambda_offset == g.lambda_offset && f.epsilon_amplitude == g.epsilon_amplitude &&
          f.epsilon_rate == g.epsilon_rate && f.epsilon_offset == g.epsilon_offset &&
          f.transition_exponent == g.transition_exponent && x.yield_pressure_factor == y.yield_pressure_factor;
+}
+
+bool same_sub_models(const ellc::ContactModel& x, const ellc::ContactModel& y) {
+  return x.normal == y.normal && x.damping == y.damping && x.tangential == y.tangential &&
+         x.narrow_phase_final_step == y.narrow_phase_final_step;
 }
 
 }  // namespace
@@ -50,94 +52,124 @@ ParsedCoefficients parse_coefficients(const std::vector<std::string>& arguments)
     *positional[index] = *value;
   }
 
-  struct Keyword {
+  // Keywords of the law's fit constants, which a scenario gives in its [model] table instead.
+  struct LawKeyword {
     std::string_view name;
     std::vector<double*> targets;
   };
-  auto& fit = c.law.fit;
-  const Keyword keywords[] = {
-      {"friction", {&c.friction}},
-      {"damping", {&c.normal_damping}},
-      {"tangential_damping", {&c.tangential_damping}},
-      {"tangential_stiffness", {&c.tangential_stiffness}},
+  auto& fit = c.model.law.fit;
+  const LawKeyword law_keywords[] = {
       {"lambda", {&fit.lambda_amplitude, &fit.lambda_rate, &fit.lambda_offset}},
       {"epsilon", {&fit.epsilon_amplitude, &fit.epsilon_rate, &fit.epsilon_offset}},
       {"exponent", {&fit.transition_exponent}},
-      {"yield_factor", {&c.law.yield_pressure_factor}},
+      {"yield_factor", {&c.model.law.yield_pressure_factor}},
   };
+  ellc::ContactModelBuilder builder(c.model);
   for (std::size_t at = 3; at < arguments.size();) {
-    const Keyword* match = nullptr;
-    for (const Keyword& keyword : keywords)
-      if (arguments[at] == keyword.name) match = &keyword;
-    if (match == nullptr)
-      return fail("unknown keyword '" + arguments[at] +
-                  "' (expected friction, damping, tangential_damping, tangential_stiffness, lambda, epsilon, "
-                  "exponent or yield_factor)");
+    const std::string& keyword = arguments[at];
+    const std::string shared_name = keyword == "damping" ? "normal_damping" : keyword;  // older name
+    if (const ellc::ContactParameterName* parameter = ellc::find_contact_parameter(shared_name)) {
+      if (at + 1 >= arguments.size()) return fail("keyword " + keyword + " needs 1 value(s)");
+      const std::string& word = arguments[at + 1];
+      std::string expected;
+      if (parameter->kind == ellc::ParameterKind::choice) {
+        expected = builder.set(shared_name, word);
+      } else {
+        const auto value = to_number(word);
+        if (!value) return fail(keyword + ": '" + word + "' is not a number");
+        expected = builder.set(shared_name, *value);
+      }
+      if (!expected.empty()) return fail(keyword + " = " + word + ": expected " + expected);
+      at += 2;
+      continue;
+    }
+    const LawKeyword* match = nullptr;
+    for (const LawKeyword& entry : law_keywords)
+      if (keyword == entry.name) match = &entry;
+    if (match == nullptr) {
+      std::string known;
+      for (const auto& parameter : ellc::kContactParameters) known += std::string(parameter.name) + ", ";
+      return fail("unknown keyword '" + keyword + "' (expected " + known +
+                  "damping, lambda, epsilon, exponent or yield_factor)");
+    }
     if (at + match->targets.size() >= arguments.size())
-      return fail("keyword " + arguments[at] + " needs " + std::to_string(match->targets.size()) + " value(s)");
+      return fail("keyword " + keyword + " needs " + std::to_string(match->targets.size()) + " value(s)");
     for (std::size_t k = 0; k < match->targets.size(); ++k) {
       const auto value = to_number(arguments[at + 1 + k]);
-      if (!value) return fail(arguments[at] + ": '" + arguments[at + 1 + k] + "' is not a number");
+      if (!value) return fail(keyword + ": '" + arguments[at + 1 + k] + "' is not a number");
       *match->targets[k] = *value;
     }
     at += 1 + match->targets.size();
   }
+  const ellc::LawParameters law = c.model.law;
+  c.model = builder.finish();
+  c.model.law = law;
 
   if (std::string error = ellc::validation_error(c.material, "pair_coeff"); !error.empty()) return fail(error);
-  if (std::string error = ellc::validation_error(c.law); !error.empty()) return fail(error);
-  for (const auto& [name, value] : {std::pair{"friction", c.friction}, std::pair{"damping", c.normal_damping},
-                                    std::pair{"tangential_damping", c.tangential_damping},
-                                    std::pair{"tangential_stiffness", c.tangential_stiffness}})
-    if (std::string error = check_non_negative(name, value); !error.empty()) return fail(error);
+  if (std::string error = ellc::validation_error(c.model, "pair_coeff"); !error.empty()) return fail(error);
   return parsed;
 }
 
-namespace {
-PairCoefficients with_model(const TypeCoefficients& c, const ellc::ContactMaterial& material) {
-  PairCoefficients pair;
-  pair.material = material;
-  pair.friction = c.friction;
-  pair.normal_damping = c.normal_damping;
-  pair.tangential_damping = c.tangential_damping;
-  pair.tangential_stiffness = c.tangential_stiffness;
-  pair.law = c.law;
-  return pair;
-}
-}  // namespace
-
-PairCoefficients explicit_pair(const TypeCoefficients& coefficients) {
-  return with_model(coefficients, ellc::mix(coefficients.material, coefficients.material));
+ellc::InteractionContext explicit_pair(const TypeCoefficients& coefficients) {
+  return ellc::make_interaction(coefficients.model, coefficients.material, coefficients.material);
 }
 
-PairCoefficients mixed_pair(const TypeCoefficients& type_i, const TypeCoefficients& type_j, std::string& error) {
+ellc::InteractionContext mixed_pair(const TypeCoefficients& type_i, const TypeCoefficients& type_j,
+                                    std::string& error) {
   error.clear();
-  if (!same_law(type_i.law, type_j.law))
+  if (!same_law(type_i.model.law, type_j.model.law))
     error = "the two types have different law parameters (lambda, epsilon, exponent, yield_factor); give this "
             "pair of types its own pair_coeff line";
-  PairCoefficients pair = with_model(type_i, ellc::mix(type_i.material, type_j.material));
-  pair.friction = std::sqrt(type_i.friction * type_j.friction);
-  pair.normal_damping = std::sqrt(type_i.normal_damping * type_j.normal_damping);
-  pair.tangential_damping = std::sqrt(type_i.tangential_damping * type_j.tangential_damping);
-  pair.tangential_stiffness = std::sqrt(type_i.tangential_stiffness * type_j.tangential_stiffness);
-  return pair;
+  else if (!same_sub_models(type_i.model, type_j.model))
+    error = "the two types have different sub-models (normal, damping_model, tangential_model, "
+            "narrow_phase_final_step); give this pair of types its own pair_coeff line";
+  ellc::ContactModel model = type_i.model;
+  model.friction = std::sqrt(type_i.model.friction * type_j.model.friction);
+  model.normal_damping = std::sqrt(type_i.model.normal_damping * type_j.model.normal_damping);
+  model.tangential_damping = std::sqrt(type_i.model.tangential_damping * type_j.model.tangential_damping);
+  model.tangential_stiffness_ratio =
+      std::sqrt(type_i.model.tangential_stiffness_ratio * type_j.model.tangential_stiffness_ratio);
+  return ellc::make_interaction(model, type_i.material, type_j.material);
 }
 
 std::array<double, TypeCoefficients::kSerializedSize> TypeCoefficients::serialize() const {
-  return {material.youngs_modulus, material.poisson_ratio,  material.yield_stress,   friction,
-          normal_damping,          tangential_damping,      tangential_stiffness,    law.fit.lambda_amplitude,
-          law.fit.lambda_rate,     law.fit.lambda_offset,   law.fit.epsilon_amplitude, law.fit.epsilon_rate,
-          law.fit.epsilon_offset,  law.fit.transition_exponent, law.yield_pressure_factor};
+  const auto& m = model;
+  const auto& f = m.law.fit;
+  return {material.youngs_modulus,
+          material.poisson_ratio,
+          material.yield_stress,
+          m.friction,
+          m.normal_damping,
+          m.tangential_damping,
+          m.tangential_stiffness_ratio,
+          f.lambda_amplitude,
+          f.lambda_rate,
+          f.lambda_offset,
+          f.epsilon_amplitude,
+          f.epsilon_rate,
+          f.epsilon_offset,
+          f.transition_exponent,
+          m.law.yield_pressure_factor,
+          static_cast<double>(m.normal),
+          static_cast<double>(m.damping),
+          static_cast<double>(m.tangential),
+          m.narrow_phase_final_step};
 }
 
 TypeCoefficients TypeCoefficients::deserialize(const std::array<double, kSerializedSize>& v) {
   TypeCoefficients c;
   c.material = {v[0], v[1], v[2]};
-  c.friction = v[3];
-  c.normal_damping = v[4];
-  c.tangential_damping = v[5];
-  c.tangential_stiffness = v[6];
-  c.law.fit = {v[7], v[8], v[9], v[10], v[11], v[12], v[13]};
-  c.law.yield_pressure_factor = v[14];
+  auto& m = c.model;
+  m.friction = v[3];
+  m.normal_damping = v[4];
+  m.tangential_damping = v[5];
+  m.tangential_stiffness_ratio = v[6];
+  m.law.fit = {v[7], v[8], v[9], v[10], v[11], v[12], v[13]};
+  m.law.yield_pressure_factor = v[14];
+  m.normal = static_cast<ellc::NormalModel>(static_cast<int>(v[15]));
+  m.damping = static_cast<ellc::DampingModel>(static_cast<int>(v[16]));
+  m.tangential = static_cast<ellc::TangentialModel>(static_cast<int>(v[17]));
+  m.narrow_phase_final_step = v[18];
   return c;
 }
 

@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 
+#include "ellc/engine/rigid_body.hpp"
 #include "fix_contact_history.hpp"
 
 namespace ellc_lammps {
@@ -50,7 +51,7 @@ void PairEllipsoidBK::allocate() {
   const auto size = static_cast<std::size_t>(n + 1) * static_cast<std::size_t>(n + 1);
   given_.assign(size, 0);
   type_coefficients_.assign(size, {});
-  pair_coefficients_.assign(size, {});
+  pair_contexts_.assign(size, {});
   type_radius_.assign(static_cast<std::size_t>(n + 1), 0.0);
 }
 
@@ -108,9 +109,9 @@ void PairEllipsoidBK::init_style() {
   // History fix. On a restarted run, creating it here picks up its records from the restart file.
   if (modify->find_fix(kHistoryFixId) < 0)
     modify->add_fix(std::string(kHistoryFixId) + " all " + FixContactHistory::kStyle + " " +
-                    std::to_string(HistoryLayout::size()));
+                    std::to_string(kHistoryDoubles));
   history_ = dynamic_cast<FixContactHistory*>(modify->fix[modify->find_fix(kHistoryFixId)]);
-  if (history_ == nullptr || history_->values_per_contact() != HistoryLayout::size())
+  if (history_ == nullptr || history_->values_per_contact() != kHistoryDoubles)
     fail(error, FLERR, style_prefix() + "fix " + kHistoryFixId + " exists but is not this style's history");
   history_->attach(this);
 
@@ -155,12 +156,17 @@ void PairEllipsoidBK::check_shapes() {
 }
 
 double PairEllipsoidBK::init_one(int i, int j) {
-  PairCoefficients resolved;
+  ellc::InteractionContext resolved;
+  const auto with_hertz = [this](TypeCoefficients coefficients) {
+    coefficients.model.hertz = hertz_mode_;  // a pair_style setting
+    return coefficients;
+  };
   if (given_[type_index(i, j)]) {
-    resolved = explicit_pair(type_coefficients_[type_index(i, j)]);
+    resolved = explicit_pair(with_hertz(type_coefficients_[type_index(i, j)]));
   } else if (given_[type_index(i, i)] && given_[type_index(j, j)]) {
     std::string problem;
-    resolved = mixed_pair(type_coefficients_[type_index(i, i)], type_coefficients_[type_index(j, j)], problem);
+    resolved = mixed_pair(with_hertz(type_coefficients_[type_index(i, i)]),
+                          with_hertz(type_coefficients_[type_index(j, j)]), problem);
     if (!problem.empty())
       fail(error, FLERR, style_prefix() + "types " + std::to_string(i) + " and " + std::to_string(j) + ": " + problem);
   } else {
@@ -170,8 +176,8 @@ double PairEllipsoidBK::init_one(int i, int j) {
              std::to_string(i) + " " + std::to_string(i) + " and " + std::to_string(j) + " " + std::to_string(j) +
              " to mix from)");
   }
-  pair_coefficients_[type_index(i, j)] = resolved;
-  pair_coefficients_[type_index(j, i)] = resolved;
+  pair_contexts_[type_index(i, j)] = resolved;
+  pair_contexts_[type_index(j, i)] = resolved;
 
   // Contact is possible only within the sum of the largest semi-axes. A type without atoms gets
   // the largest radius present, so atoms added later are not missed (checked in compute()).
@@ -245,7 +251,7 @@ void PairEllipsoidBK::compute(int eflag, int vflag) {
   // The setup of a run recomputes the forces of the current step, whose contacts were already
   // advanced by the last step of the previous run (or are fresh): the history must not move again.
   const bool during_setup = update->setupflag != 0;
-  const int history_size = HistoryLayout::size();
+  const int history_size = kHistoryDoubles;
   std::vector<double> scratch;
 
   // Per atom, owned and ghost, once per step: the posed ellipsoid, r̂ and the motion.
@@ -264,8 +270,9 @@ void PairEllipsoidBK::compute(int eflag, int vflag) {
     BodyState& motion = motions_[slot];
     motion = body_state(index);
     if (largest > 0.0)
-      motion.angular_velocity = angular_velocity({atom->angmom[index][0], atom->angmom[index][1], atom->angmom[index][2]},
-                                                 motion.orientation, motion.semi_axes, motion.mass);
+      motion.angular_velocity = ellc::engine::angular_velocity_from_momentum(
+          {atom->angmom[index][0], atom->angmom[index][1], atom->angmom[index][2]}, motion.orientation,
+          ellc::engine::solid_ellipsoid_inertia(motion.mass, motion.semi_axes));
     shapes_.emplace_back(motion.semi_axes, ellc::Pose{motion.position, motion.orientation});
     mean_radii_[slot] = shapes_.back().mean_radius();
   }
@@ -290,7 +297,7 @@ void PairEllipsoidBK::compute(int eflag, int vflag) {
       const double dx = x[i][0] - x[j][0], dy = x[i][1] - x[j][1], dz = x[i][2] - x[j][2];
       if (dx * dx + dy * dy + dz * dz >= reach * reach) {  // bounding spheres apart
         if (!during_setup && history_->slot_active(i, jj)) {
-          std::fill(history, history + HistoryLayout::size(), 0.0);
+          std::fill(history, history + kHistoryDoubles, 0.0);
           history_->set_slot_active(i, jj, false);
         }
         continue;
@@ -300,10 +307,9 @@ void PairEllipsoidBK::compute(int eflag, int vflag) {
       const int a = i_is_a ? i : j;
       const int b = i_is_a ? j : i;
       const auto sa = static_cast<std::size_t>(a), sb = static_cast<std::size_t>(b);
-      const PairResult result = evaluate_pair({shapes_[sa], mean_radii_[sa], motions_[sa]},
-                                              {shapes_[sb], mean_radii_[sb], motions_[sb]},
-                                              pair_coefficients_[type_index(type[i], type[j])], hertz_mode_, timestep,
-                                              history);
+      const PairEvaluation result = evaluate_pair({shapes_[sa], mean_radii_[sa], motions_[sa]},
+                                                  {shapes_[sb], mean_radii_[sb], motions_[sb]},
+                                                  pair_contexts_[type_index(type[i], type[j])], timestep, history);
       if (result.geometry_failed && narrow_phase_failures_++ == 0)
         error->warning(FLERR, style_prefix() + "the narrow phase did not converge for atoms " + std::to_string(tag[a]) +
                                   " and " + std::to_string(tag[b]) + " at step " + std::to_string(update->ntimestep) +

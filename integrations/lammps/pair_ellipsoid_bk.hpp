@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-#include "contact_model.hpp"
+#include "pair_adapter.hpp"
 #include "ellc/geometry/ellipsoid.hpp"
 #include "lammps_includes.hpp"
 #include "pair_coefficients.hpp"
@@ -61,7 +61,7 @@ class PairEllipsoidBK : public LAMMPS_NS::Pair {
   ellc::HertzMode hertz_mode_ = ellc::HertzMode::hale;
   std::vector<char> given_;                          // 1 where pair_coeff I J was given, (ntypes+1)²
   std::vector<TypeCoefficients> type_coefficients_;  // as given by pair_coeff, (ntypes+1)²
-  std::vector<PairCoefficients> pair_coefficients_;  // resolved (explicit or mixed) by init_one
+  std::vector<ellc::InteractionContext> pair_contexts_;  // resolved (explicit or mixed) by init_one
   std::vector<double> type_radius_;                   // largest semi-axis of any atom of the type
   FixContactHistory* history_ = nullptr;
   LAMMPS_NS::Compute* bodies_compute_ = nullptr;

@@ -4,9 +4,9 @@
 #include <pybind11/stl.h>
 
 #include "bindings.hpp"
-#include "ellc/io/case_file.hpp"
+#include "ellc/cases/case_file.hpp"
 #include "ellc/geometry/tip_contact.hpp"
-#include "ellc/io/protocol.hpp"
+#include "ellc/cases/protocol.hpp"
 #include "numpy_support.hpp"
 
 namespace ellc::python {

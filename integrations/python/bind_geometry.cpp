@@ -10,7 +10,7 @@
 #include "ellc/geometry/contact_geometry.hpp"
 #include "ellc/geometry/ellipsoid.hpp"
 #include "ellc/geometry/narrow_phase.hpp"
-#include "ellc/geometry/normal_contact.hpp"
+#include "ellc/contact/normal_contact.hpp"
 #include "ellc/geometry/tip_contact.hpp"
 #include "ellc/geometry/wall_contact.hpp"
 

@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "bindings.hpp"
-#include "ellc/io/case_file.hpp"
+#include "ellc/cases/case_file.hpp"
 #include "ellc/law/contact_constants.hpp"
 #include "ellc/law/contact_law.hpp"
 #include "ellc/law/contact_patch.hpp"

@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "ellc/calibration/calibration_case.hpp"
-#include "ellc/io/case_file.hpp"
+#include "ellc/cases/case_file.hpp"
 #include "ellc/law/contact_law.hpp"
 
 namespace ellc::testing_support {

@@ -9,7 +9,7 @@
 #include <string>
 #include <sys/wait.h>
 
-#include "ellc/io/case_file.hpp"
+#include "ellc/cases/case_file.hpp"
 
 namespace {
 namespace fs = std::filesystem;

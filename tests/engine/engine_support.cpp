@@ -4,16 +4,16 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "ellc/engine/random.hpp"
+#include "ellc/scenario/random.hpp"
 
 namespace ellc::engine::testing {
 
 EngineSettings free_settings(NormalModel model) {
   EngineSettings settings;
   settings.contact.material = kNmc;
-  settings.contact.normal_model = model;
-  settings.contact.damping_ratio = 0.0;
-  settings.contact.friction = 0.0;
+  settings.contact.model.normal = model;
+  settings.contact.model.normal_damping = settings.contact.model.tangential_damping = 0.0;
+  settings.contact.model.friction = 0.0;
   settings.contact.wall_friction = 0.0;
   settings.box = {200.0, 200.0};
   settings.max_speed = 1e6;

@@ -3,9 +3,9 @@
 
 #include <string>
 
-#include "ellc/engine/packing.hpp"
-#include "ellc/engine/scenario.hpp"
-#include "ellc/engine/scenario_runner.hpp"
+#include "ellc/scenario/packing.hpp"
+#include "ellc/scenario/scenario.hpp"
+#include "ellc/scenario/scenario_runner.hpp"
 #include "ellc/engine/simulation.hpp"
 
 namespace ellc::engine::testing {

@@ -51,8 +51,8 @@ CollidingResult run_colliding(const CollidingRun& run) {
     particles.velocity[slot] = ellipsoids.velocity[slot];
   }
   EngineSettings settings = testing::free_settings(NormalModel::becker_kamlah);
-  settings.contact.friction = 0.3;
-  settings.contact.damping_ratio = 0.05;
+  settings.contact.model.friction = 0.3;
+  settings.contact.model.normal_damping = settings.contact.model.tangential_damping = 0.05;
   settings.box = testing::kCollidingBox;
   settings.dt = stable_time_step(particles, testing::kScaledDensity, settings.contact.material);
   settings.parallel_threshold = 0;

@@ -4,7 +4,7 @@
 
 #include <cmath>
 
-#include "ellc/engine/random.hpp"
+#include "ellc/scenario/random.hpp"
 #include "ellc/engine/rigid_body.hpp"
 #include "ellc/engine/time_step.hpp"
 #include "ellc/geometry/narrow_phase.hpp"
@@ -84,10 +84,10 @@ double thornton_restitution(double ratio) {  // ratio = v_y / v_impact ≤ 1
 TEST(EngineDynamics, RestitutionMatchesThornton1997) {
   const double radius = 5.0;
   EngineSettings base = free_settings(NormalModel::becker_kamlah);
-  base.contact.law = LawParameters{}.elastic_fully_plastic();
+  base.contact.model.law = LawParameters{}.elastic_fully_plastic();
   const ContactConstants constants =
       make_contact_constants(mix(kNmc, kNmc), {1 / radius, 1 / radius}, {1 / radius, 1 / radius}, 0.0, 2 * radius,
-                             HertzMode::hale, base.contact.law);
+                             HertzMode::hale, base.contact.model.law);
   ParticleSet probe;
   probe.add(0, Eigen::Vector3d::Constant(radius), kScaledDensity, Eigen::Vector3d::Zero(), Eigen::Quaterniond::Identity());
   const double reduced_mass = 0.5 * probe.mass[0];
@@ -164,8 +164,8 @@ TEST(EngineDynamics, MomentumIsConserved) {
   for (auto& omega : particles.angular_velocity)
     omega = Eigen::Vector3d(spin.uniform(-0.1, 0.1), spin.uniform(-0.1, 0.1), spin.uniform(-0.1, 0.1));
   EngineSettings settings = testing::free_settings(NormalModel::becker_kamlah);
-  settings.contact.friction = 0.5;
-  settings.contact.damping_ratio = 0.1;
+  settings.contact.model.friction = 0.5;
+  settings.contact.model.normal_damping = settings.contact.model.tangential_damping = 0.1;
   settings.box = testing::kCollidingBox;
   settings.dt = stable_time_step(particles, kScaledDensity, kNmc);
   const auto momentum = [](const ParticleSet& p) {

@@ -4,8 +4,8 @@
 #include <gtest/gtest.h>
 
 #include "ellc/engine/broad_phase.hpp"
-#include "ellc/engine/contact_force.hpp"
-#include "ellc/engine/random.hpp"
+#include "ellc/contact/contact_energy.hpp"
+#include "ellc/scenario/random.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -39,8 +39,7 @@ TEST(EnginePairMap, PeriodicPairKeyedByIds) {
 TEST(EnginePairMap, HistorySurvivesRebuildAndReordering) {
   const Box box{20.0, 20.0};
   auto before = find_candidate_pairs(three_spheres(false), box, 0.1);
-  before[0].history.max_overlap = 0.25;
-  before[0].history.active = true;
+  before[0].history.max_overlap = 0.25;  // active: δ_* > 0
   auto after = find_candidate_pairs(three_spheres(true), box, 0.1);  // slots reversed
   ASSERT_EQ(after.size(), 1U);
   EXPECT_EQ(after[0].key, pair_key(0, 1));
@@ -55,11 +54,11 @@ TEST(EnginePairMap, DroppedActiveContactReleasesItsWork) {
   const Box box{20.0, 20.0};
   auto before = find_candidate_pairs(three_spheres(false), box, 0.1);
   ContactHistory& history = before[0].history;
-  history.active = true;
-  history.constants = make_contact_constants(mix(Material{142000.0, 0.25, 7900.0}, Material{142000.0, 0.25, 7900.0}),
-                                             {1.0, 1.0}, {1.0, 1.0}, 0.0, 2.0, HertzMode::hale);
-  history.max_overlap = 10.0 * history.constants.yield_overlap;
-  const double work = plastic_work(history.constants, history.max_overlap);
+  ContactCache& cache = before[0].cache;
+  cache.constants = make_contact_constants(mix(Material{142000.0, 0.25, 7900.0}, Material{142000.0, 0.25, 7900.0}),
+                                           {1.0, 1.0}, {1.0, 1.0}, 0.0, 2.0, HertzMode::hale);
+  history.max_overlap = 10.0 * cache.constants.yield_overlap;
+  const double work = plastic_work(cache.constants, history.max_overlap);
   EXPECT_GT(work, 0.0);
   std::vector<PairSlot> none;
   EXPECT_EQ(carry_over_history(before, none), work);

@@ -117,9 +117,9 @@ TEST(EngineSettling, DepositComesToRestOnTheFloorWhichCarriesItsWeight) {
   const ParticleSet& p = sim.particles();
   double max_overlap = 0.0;  // relative to the smaller r̂ of the pair
   for (const PairSlot& pair : sim.pairs())
-    if (pair.history.active)
+    if (pair.history.active())
       max_overlap =
-          std::max(max_overlap, pair.history.last_overlap / std::min(p.mean_radius[pair.i], p.mean_radius[pair.j]));
+          std::max(max_overlap, pair.cache.last_overlap / std::min(p.mean_radius[pair.i], p.mean_radius[pair.j]));
   EXPECT_LT(max_overlap, 0.05);
 
   // 4. The particles rest on each other and on the floor. A frictional packing at rest needs about

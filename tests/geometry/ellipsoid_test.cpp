@@ -8,7 +8,7 @@
 #include <cmath>
 #include <numbers>
 
-#include "geometry_test_support.hpp"
+#include "support/geometry_support.hpp"
 
 namespace ellc {
 namespace {

@@ -9,7 +9,7 @@
 #include <type_traits>
 
 #include "ellc/geometry/contact_function.hpp"
-#include "geometry_test_support.hpp"
+#include "support/geometry_support.hpp"
 
 namespace ellc {
 namespace {

@@ -15,7 +15,7 @@
 #include <numbers>
 
 #include "ellc/geometry/narrow_phase.hpp"
-#include "geometry_test_support.hpp"
+#include "support/geometry_support.hpp"
 
 namespace ellc {
 namespace {

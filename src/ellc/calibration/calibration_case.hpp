@@ -13,7 +13,7 @@
 #include <vector>
 
 #include "ellc/hertz/elliptic_hertz.hpp"
-#include "ellc/io/case_file.hpp"
+#include "ellc/cases/case_file.hpp"
 #include "ellc/law/contact_constants.hpp"
 
 namespace ellc {

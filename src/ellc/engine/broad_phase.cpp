@@ -1,6 +1,6 @@
 #include "ellc/engine/broad_phase.hpp"
 
-#include "ellc/engine/contact_force.hpp"
+#include "ellc/contact/contact_energy.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -208,12 +208,14 @@ double carry_over_history(std::vector<PairSlot>& previous, std::vector<PairSlot>
   std::size_t n = 0;
   for (auto& old_pair : previous) {
     // Separated pairs keep their last separating axis: it spares the next narrow phase a cold start.
-    if (!old_pair.history.active && !old_pair.history.constants_cached && !old_pair.history.warm_start.valid) continue;
+    const bool active = old_pair.history.active();
+    if (!active && !old_pair.cache.constants_cached && old_pair.history.warm_valid == 0.0) continue;
     while (n < next.size() && next[n].key < old_pair.key) ++n;
     if (n < next.size() && next[n].key == old_pair.key) {
       next[n].history = old_pair.history;
-    } else if (old_pair.history.active) {
-      released_work += plastic_work(old_pair.history.constants, old_pair.history.max_overlap);
+      next[n].cache = old_pair.cache;
+    } else if (active) {
+      released_work += plastic_work(old_pair.cache.constants, old_pair.history.max_overlap);
     }
   }
   return released_work;

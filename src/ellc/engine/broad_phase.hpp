@@ -4,7 +4,7 @@
 
 #include <vector>
 
-#include "ellc/engine/contact_history.hpp"
+#include "ellc/engine/pair_map.hpp"
 #include "ellc/engine/particles.hpp"
 #include "ellc/engine/settings.hpp"
 

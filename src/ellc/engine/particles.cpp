@@ -3,6 +3,8 @@
 #include <cmath>
 #include <numbers>
 
+#include "ellc/engine/rigid_body.hpp"
+
 namespace ellc::engine {
 
 double ellipsoid_volume(const Eigen::Vector3d& axes) noexcept {
@@ -12,11 +14,10 @@ double ellipsoid_volume(const Eigen::Vector3d& axes) noexcept {
 void ParticleSet::add(std::uint32_t particle_id, const Eigen::Vector3d& axes, double density,
                       const Eigen::Vector3d& centre, const Eigen::Quaterniond& rotation) {
   const double m = density * ellipsoid_volume(axes);
-  const Eigen::Vector3d sq = axes.cwiseProduct(axes);
   id.push_back(particle_id);
   semi_axes.push_back(axes);
   mass.push_back(m);
-  inertia.emplace_back(m * (sq.y() + sq.z()) / 5.0, m * (sq.x() + sq.z()) / 5.0, m * (sq.x() + sq.y()) / 5.0);
+  inertia.push_back(solid_ellipsoid_inertia(m, axes));
   mean_radius.push_back(std::cbrt(axes.prod()));
   bounding_radius.push_back(axes.maxCoeff());
   position.push_back(centre);

@@ -9,6 +9,19 @@
 
 namespace ellc::engine {
 
+// Principal moments of inertia of a solid ellipsoid of mass m and semi-axes (a, b, c), body frame.
+[[nodiscard]] inline Eigen::Vector3d solid_ellipsoid_inertia(double mass, const Eigen::Vector3d& semi_axes) noexcept {
+  const Eigen::Vector3d sq = semi_axes.cwiseProduct(semi_axes);
+  return {mass * (sq.y() + sq.z()) / 5.0, mass * (sq.x() + sq.z()) / 5.0, mass * (sq.x() + sq.y()) / 5.0};
+}
+
+// ω = R I⁻¹ Rᵀ L: the world-frame angular velocity of a body with world-frame angular momentum L.
+[[nodiscard]] inline Eigen::Vector3d angular_velocity_from_momentum(const Eigen::Vector3d& angular_momentum,
+                                                                    const Eigen::Quaterniond& orientation,
+                                                                    const Eigen::Vector3d& inertia) noexcept {
+  return orientation * (orientation.conjugate() * angular_momentum).cwiseQuotient(inertia);
+}
+
 // dω/dt = I⁻¹ (τ − ω × I ω), all in the body frame (Euler's equations).
 [[nodiscard]] inline Eigen::Vector3d angular_acceleration(const Eigen::Vector3d& inertia,
                                                           const Eigen::Vector3d& omega,

@@ -7,29 +7,27 @@
 #include <array>
 #include <cstddef>
 
-#include "ellc/hertz/elliptic_hertz.hpp"
-#include "ellc/law/transition_fit.hpp"
+#include "ellc/contact/contact_model.hpp"
 #include "ellc/material/material.hpp"
 
 namespace ellc::engine {
 
-enum class NormalModel {
-  becker_kamlah,  // the elastoplastic law (src/ellc/law/contact_law.hpp)
-  hertz,          // purely elastic: the same law with an unreachable yield stress
-};
+// The engine's defaults of the shared contact model (src/ellc/contact/contact_model.hpp): ζ = 0.05
+// for both dashpots, μ = 0.3, and one Newton step of the common normal per time step (10⁻³ rad:
+// the normal then stays within ~(its turn per step)² ≲ 10⁻⁶ rad of the solution; docs/engine.md).
+[[nodiscard]] inline ContactModel engine_contact_defaults() noexcept {
+  ContactModel model;
+  model.normal_damping = 0.05;
+  model.tangential_damping = 0.05;
+  model.friction = 0.3;
+  model.narrow_phase_final_step = 1e-3;
+  return model;
+}
 
 struct ContactSettings {
-  Material material;                 // particles and walls (walls are of the particle material)
-  HertzMode hertz = HertzMode::hale;
-  LawParameters law;
-  NormalModel normal_model = NormalModel::becker_kamlah;
-  double damping_ratio = 0.05;       // ζ of the viscous normal (and tangential) dashpot
-  double friction = 0.3;             // Coulomb µ between particles
-  double wall_friction = 0.3;        // Coulomb µ against the walls
-  // Ellipsoid pairs: a Newton step for the common normal shorter than this (rad) ends the solve
-  // (NarrowPhaseOptions, narrow_phase.hpp). 10⁻³ takes one step per time step from the warm start,
-  // leaving the normal within ~(its turn per step)² ≲ 10⁻⁶ rad; 10⁻⁹ solves to rounding (docs/engine.md).
-  double narrow_phase_final_step = 1e-3;
+  Material material;                               // particles and walls (walls are of the particle material)
+  ContactModel model = engine_contact_defaults();  // particle–particle contacts
+  double wall_friction = 0.3;                      // μ against the walls; otherwise the walls use `model`
 };
 
 // Periodic in x and y over [0, lx) × [0, ly); walls bound z.

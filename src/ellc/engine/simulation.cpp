@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 
+#include "ellc/contact/contact_energy.hpp"
 #include "ellc/engine/broad_phase.hpp"
 #include "ellc/engine/rigid_body.hpp"
 
@@ -30,25 +31,29 @@ double default_skin(const ParticleSet& particles, const Box& box) noexcept {
   return std::max(0.1 * mean_bounding, std::min(0.2 * mean_bounding, room));
 }
 
-double shear_modulus_of(const Material& material) noexcept {
-  return material.youngs_modulus / (2.0 * (1.0 + material.poisson_ratio));
-}
-
-// Mindlin's G_e = [ (2 − ν_I)/G_I + (2 − ν_J)/G_J ]⁻¹ for one material on both sides.
-double effective_shear_modulus(const Material& material) noexcept {
-  return shear_modulus_of(material) / (2.0 * (2.0 - material.poisson_ratio));
+// Ends a contact on separation and returns its plastic work, which the caller books as
+// dissipated. The cache keeps the sphere constants (they do not change) and the history its warm
+// start (the separating axis just found is tested first next step).
+double end_contact(ContactHistory& history, ContactCache& cache) noexcept {
+  const double released = plastic_work(cache.constants, history.max_overlap);
+  history.end_contact();
+  cache.last_overlap = 0.0;
+  return released;
 }
 
 }  // namespace
 
 Simulation::Simulation(const EngineSettings& settings, ParticleSet particles, const std::array<Wall, 2>& walls)
     : settings_(settings), particles_(std::move(particles)), walls_(walls) {
-  normal_context_ = make_normal_context(settings_.contact);
-  shear_modulus_ = effective_shear_modulus(settings_.contact.material);
+  const ContactSettings& contact = settings_.contact;
+  pair_context_ = make_interaction(contact.model, contact.material, contact.material);
+  ContactModel wall_model = contact.model;
+  wall_model.friction = contact.wall_friction;
+  wall_context_ = make_interaction(wall_model, contact.material, contact.material);
   const std::size_t count = particles_.size();
   prepare_derived_arrays();
   for (int wall = 0; wall < 2; ++wall) {
-    wall_history_[wall].assign(count, ContactHistory{});
+    wall_history_[wall].assign(count, WallContact{});
     wall_results_[wall].assign(count, WallResult{});
     wall_reported_[wall].assign(count, 0);
   }
@@ -101,10 +106,6 @@ std::size_t Simulation::pairs_proven_apart() const noexcept {
 }
 
 void Simulation::set_wall_position(int wall, double position) { walls_[wall].position = position; }
-
-ResponseParameters Simulation::response_parameters(double friction) const noexcept {
-  return {shear_modulus_, settings_.contact.damping_ratio, friction, settings_.dt};
-}
 
 void Simulation::rebuild_neighbours() {
   wrap_positions(particles_, settings_.box);
@@ -206,13 +207,12 @@ std::size_t Simulation::kick_and_check(double half_dt) noexcept {
 void Simulation::compute_forces() {
   const std::size_t count = particles_.size();
   const std::size_t pair_count = pairs_.size();
-  const ResponseParameters pair_parameters = response_parameters(settings_.contact.friction);
 #pragma omp parallel if (count > settings_.parallel_threshold)
   {
 #pragma omp for schedule(static) nowait
     for (std::size_t slot = 0; slot < count; ++slot) evaluate_walls_and_reset(slot);
 #pragma omp for schedule(dynamic, 256)
-    for (std::size_t index = 0; index < pair_count; ++index) evaluate_pair(index, pair_parameters);
+    for (std::size_t index = 0; index < pair_count; ++index) evaluate_pair(index);
   }
   accumulate();
 }
@@ -223,48 +223,38 @@ void Simulation::evaluate_walls_and_reset(std::size_t slot) {
   const Ellipsoid* shape = is_sphere_[slot] == 0 ? &shapes_[slot] : nullptr;
   Eigen::Vector3d force = Eigen::Vector3d::Zero();
   Eigen::Vector3d torque = Eigen::Vector3d::Zero();
-  const ResponseParameters parameters = response_parameters(settings_.contact.wall_friction);
+  const BodyMotion motion{p.velocity[slot], omega_world_[slot], p.mass[slot]};
   for (int w = 0; w < 2; ++w) {
     const Wall& wall = walls_[w];
     std::uint8_t& reported = wall_reported_[w][slot];
     const double reach = p.bounding_radius[slot] - wall.side * (p.position[slot].z() - wall.position);
     if (reach <= 0.0 && reported == 0) continue;  // far from this wall and not in contact (most particles)
-    ContactHistory& history = wall_history_[w][slot];
+    ContactHistory& history = wall_history_[w][slot].history;
+    ContactCache& cache = wall_history_[w][slot].cache;
     WallResult& result = wall_results_[w][slot];
     result = WallResult{};
     reported = 1;  // cleared below if the result stays empty
     PairSolution solution;
     if (reach > 0.0) {
       const BodyRef body{p.semi_axes[slot], p.position[slot], p.orientation[slot], p.mean_radius[slot], shape};
-      solution = solve_wall(body, wall, is_sphere_[slot] != 0, history, normal_context_);
+      solution = solve_wall(body, WallPlane{wall.position, wall.side}, is_sphere_[slot] != 0, history, cache,
+                            wall_context_);
     }
     if (solution.status == PairStatus::failed) {
       result.failed = true;
       continue;
     }
     if (solution.status == PairStatus::separated || solution.law.regime == Regime::separated) {
-      if (solution.status == PairStatus::separated && history.active) result.released_work = clear_history(history);
-      if (solution.status == PairStatus::contact) {  // overlapping but below δ_p: no force, history kept
-        history.active = true;
-        history.max_overlap = solution.law.max_overlap;
-        history.last_overlap = solution.overlap;
-        result.contact = true;
-      }
+      if (solution.status == PairStatus::separated && history.active()) result.released_work = end_contact(history, cache);
+      if (solution.status == PairStatus::contact) result.contact = true;  // overlapping below δ_p: no force, history kept
       reported = holds_something(result) ? 1 : 0;
       continue;
     }
-    history.active = true;
-    history.max_overlap = solution.law.max_overlap;
-    history.last_overlap = solution.overlap;
-    const Eigen::Vector3d lever = solution.point - p.position[slot];
-    ContactKinematics kinematics{solution.normal,
-                                 Eigen::Vector3d(0.0, 0.0, wall.velocity) - p.velocity[slot] - omega_world_[slot].cross(lever),
-                                 p.mass[slot]};
-    const Eigen::Vector3d on_wall =
-        contact_response(kinematics, *solution.constants, solution.overlap, solution.law.force, parameters, history);
-    force -= on_wall;
-    torque -= lever.cross(on_wall);
-    result.force_on_wall = on_wall;
+    const WallForces on_wall =
+        wall_forces(solution, p.position[slot], motion, wall.velocity, wall_context_, settings_.dt, history);
+    force -= on_wall.force_on_wall;
+    torque -= on_wall.lever_cross_force;
+    result.force_on_wall = on_wall.force_on_wall;
     result.regime = solution.law.regime;
     result.contact = true;
   }
@@ -272,7 +262,7 @@ void Simulation::evaluate_walls_and_reset(std::size_t slot) {
   p.torque[slot] = torque;
 }
 
-void Simulation::evaluate_pair(std::size_t index, const ResponseParameters& parameters) {
+void Simulation::evaluate_pair(std::size_t index) {
   auto& p = particles_;
   PairSlot& pair = pairs_[index];
   pair_reported_[index] = 0;
@@ -281,6 +271,7 @@ void Simulation::evaluate_pair(std::size_t index, const ResponseParameters& para
   const double travel = travel_[i] + travel_[j];
   if (proven_apart(index, travel)) return;  // the test below would find the pair apart too
   ContactHistory& history = pair.history;
+  ContactCache& cache = pair.cache;
   const Eigen::Vector3d centre_j = p.position[j] + pair.shift;
   const double reach = p.bounding_radius[i] + p.bounding_radius[j];
   PairSolution solution;
@@ -292,7 +283,7 @@ void Simulation::evaluate_pair(std::size_t index, const ResponseParameters& para
                          is_sphere_[i] == 0 ? &shapes_[i] : nullptr};
     const BodyRef body_j{p.semi_axes[j], centre_j, p.orientation[j], p.mean_radius[j],
                          is_sphere_[j] == 0 ? &shapes_[j] : nullptr};
-    solution = solve_pair(body_i, body_j, is_sphere_[i] != 0 && is_sphere_[j] != 0, history, normal_context_);
+    solution = solve_pair(body_i, body_j, is_sphere_[i] != 0 && is_sphere_[j] != 0, history, cache, pair_context_);
   } else {
     solution.clearance = std::sqrt(distance_sq) - reach;  // bounding spheres apart
   }
@@ -304,8 +295,8 @@ void Simulation::evaluate_pair(std::size_t index, const ResponseParameters& para
     return;
   }
   if (solution.status == PairStatus::separated) {
-    if (history.active) {
-      const double released = clear_history(history);
+    if (history.active()) {
+      const double released = end_contact(history, cache);
       if (released != 0.0) {
         result = PairResult{};
         result.released_work = released;
@@ -317,27 +308,17 @@ void Simulation::evaluate_pair(std::size_t index, const ResponseParameters& para
     if (settings_.skip_proven_separated && usable > 0.0) clearance_budget_[index] = travel + usable;
     return;
   }
-  history.active = true;
-  history.max_overlap = solution.law.max_overlap;
-  history.last_overlap = solution.overlap;
   result = PairResult{};
   pair_reported_[index] = 1;
   result.contact = true;
   result.regime = solution.law.regime;
   if (solution.law.regime == Regime::separated) return;  // overlapping below δ_p: no force
-  const Eigen::Vector3d lever_i = solution.point - p.position[i];
-  const Eigen::Vector3d lever_j = solution.point - centre_j;
-  const double mass_i = p.mass[i];
-  const double mass_j = p.mass[j];
-  ContactKinematics kinematics{solution.normal,
-                               p.velocity[j] + omega_world_[j].cross(lever_j) - p.velocity[i] -
-                                   omega_world_[i].cross(lever_i),
-                               mass_i * mass_j / (mass_i + mass_j)};
-  const Eigen::Vector3d on_j =
-      contact_response(kinematics, *solution.constants, solution.overlap, solution.law.force, parameters, history);
-  result.force_on_j = on_j;
-  result.torque_i = -lever_i.cross(on_j);
-  result.torque_j = lever_j.cross(on_j);
+  const PairForces forces =
+      pair_forces(solution, p.position[i], BodyMotion{p.velocity[i], omega_world_[i], p.mass[i]}, centre_j,
+                  BodyMotion{p.velocity[j], omega_world_[j], p.mass[j]}, pair_context_, settings_.dt, history);
+  result.force_on_j = forces.force_on_j;
+  result.torque_i = forces.torque_on_i;
+  result.torque_j = forces.torque_on_j;
 }
 
 // Where contributions meet. Each particle adds its pair forces to its wall forces in pair-list
@@ -421,23 +402,23 @@ double Simulation::kinetic_energy() const noexcept {
 
 double Simulation::plastic_dissipation() const noexcept {
   double energy = released_work_;
-  const auto remaining = [](const ContactHistory& h) {
-    return h.active ? plastic_work(h.constants, h.max_overlap) : 0.0;
+  const auto remaining = [](const ContactHistory& h, const ContactCache& c) {
+    return h.active() ? plastic_work(c.constants, h.max_overlap) : 0.0;
   };
-  for (const auto& pair : pairs_) energy += remaining(pair.history);
-  for (const auto& histories : wall_history_)
-    for (const auto& history : histories) energy += remaining(history);
+  for (const auto& pair : pairs_) energy += remaining(pair.history, pair.cache);
+  for (const auto& walls : wall_history_)
+    for (const auto& wall : walls) energy += remaining(wall.history, wall.cache);
   return energy;
 }
 
 double Simulation::contact_elastic_energy() const noexcept {
   double energy = 0.0;
-  const auto stored = [](const ContactHistory& h) {
-    return h.active ? recoverable_energy(h.constants, h.last_overlap, h.max_overlap) : 0.0;
+  const auto stored = [](const ContactHistory& h, const ContactCache& c) {
+    return h.active() ? recoverable_energy(c.constants, c.last_overlap, h.max_overlap) : 0.0;
   };
-  for (const auto& pair : pairs_) energy += stored(pair.history);
-  for (const auto& histories : wall_history_)
-    for (const auto& history : histories) energy += stored(history);
+  for (const auto& pair : pairs_) energy += stored(pair.history, pair.cache);
+  for (const auto& walls : wall_history_)
+    for (const auto& wall : walls) energy += stored(wall.history, wall.cache);
   return energy;
 }
 
@@ -479,13 +460,6 @@ double Simulation::highest_point() const noexcept {
   for (std::size_t slot = 0; slot < particles_.size(); ++slot)
     top = std::max(top, particles_.position[slot].z() + particles_.bounding_radius[slot]);
   return top;
-}
-
-double Simulation::lowest_point() const noexcept {
-  double bottom = std::numeric_limits<double>::infinity();
-  for (std::size_t slot = 0; slot < particles_.size(); ++slot)
-    bottom = std::min(bottom, particles_.position[slot].z() - particles_.bounding_radius[slot]);
-  return bottom;
 }
 
 }  // namespace ellc::engine

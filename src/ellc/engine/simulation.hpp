@@ -1,7 +1,7 @@
 #pragma once
 // The DEM world: particles, two z walls, the neighbour list with its contact histories, and one
-// velocity-Verlet step. Broad phase (broad_phase.hpp), narrow phase (pair_geometry.hpp) and the
-// force response (contact_force.hpp) live apart; this class only orders them.
+// velocity-Verlet step. Broad phase (broad_phase.hpp) here; narrow phase and contact model
+// (src/ellc/contact/pair_contact.hpp), shared with LAMMPS; this class only orders them.
 //
 // Determinism: every contact is evaluated independently (in parallel) into its own slot of a
 // result array; each particle then gathers its forces (in parallel) in the fixed order of the
@@ -15,9 +15,10 @@
 #include <string>
 #include <vector>
 
-#include "ellc/engine/contact_force.hpp"
-#include "ellc/engine/contact_history.hpp"
-#include "ellc/engine/pair_geometry.hpp"
+#include "ellc/contact/contact_history.hpp"
+#include "ellc/contact/contact_model.hpp"
+#include "ellc/contact/pair_contact.hpp"
+#include "ellc/engine/pair_map.hpp"
 #include "ellc/engine/particles.hpp"
 #include "ellc/engine/settings.hpp"
 #include "ellc/geometry/ellipsoid.hpp"
@@ -40,6 +41,12 @@ class RunawayError : public std::runtime_error {
 inline constexpr int kBottomWall = 0;
 inline constexpr int kTopWall = 1;
 inline constexpr int kRegimeCount = 5;  // Regime::separated .. Regime::unloading
+
+// A particle's contact with one wall: the shared history record and the engine's cache.
+struct WallContact {
+  ContactHistory history;
+  ContactCache cache;
+};
 
 struct ContactCounts {
   std::size_t particle_contacts = 0;  // particle–particle pairs with δ > 0
@@ -81,7 +88,6 @@ class Simulation {
   [[nodiscard]] double porosity() const noexcept;
   [[nodiscard]] std::size_t wall_contact_count(int wall) const noexcept;
   [[nodiscard]] double highest_point() const noexcept;  // max z of the bounding spheres
-  [[nodiscard]] double lowest_point() const noexcept;
 
   // Full state (particles, walls, contact histories, neighbour list, counters) for restart.
   void write_state(std::ostream& out) const;
@@ -128,17 +134,16 @@ class Simulation {
   [[nodiscard]] std::size_t kick_and_check(double half_dt) noexcept;
   void kick_particle(std::size_t slot, double half_dt, const Eigen::Vector3d& gravity, double drag) noexcept;
   void compute_forces();
-  void evaluate_pair(std::size_t index, const ResponseParameters& parameters);
+  void evaluate_pair(std::size_t index);
   void evaluate_walls_and_reset(std::size_t slot);
   void accumulate();
   [[noreturn]] void report_runaway(std::size_t slot) const;
-  [[nodiscard]] ResponseParameters response_parameters(double friction) const noexcept;
 
   EngineSettings settings_;
   ParticleSet particles_;
   std::array<Wall, 2> walls_;
-  NormalContext normal_context_;
-  double shear_modulus_ = 0.0;  // G_e of the particle material with itself
+  InteractionContext pair_context_;  // particle–particle contacts
+  InteractionContext wall_context_;  // particle–wall contacts (the walls' friction)
   std::vector<char> is_sphere_;
   std::vector<Eigen::Vector3d> omega_world_;
   std::vector<Ellipsoid> shapes_;  // posed ellipsoids of this step (non-spheres only)
@@ -157,7 +162,7 @@ class Simulation {
   std::vector<std::uint32_t> pairs_of_particle_start_;
   std::vector<std::uint32_t> pairs_of_particle_;
   std::vector<double> chunk_released_work_;
-  std::array<std::vector<ContactHistory>, 2> wall_history_;  // per particle slot
+  std::array<std::vector<WallContact>, 2> wall_history_;  // per particle slot
   std::array<std::vector<WallResult>, 2> wall_results_;
   // 1: wall_results_[w][slot] is this step's; 0: empty, and then the wall contact is not active
   // (every step that leaves a wall history active reports it), so a particle far from the wall

@@ -30,15 +30,16 @@ struct Reader {
   }
 };
 
-template <typename Io, typename History>
-void history_fields(Io&& io, History& h) {
+// The shared history record as its eight doubles (contact_history.hpp), then the engine's cache.
+template <typename Io, typename History, typename Cache>
+void history_fields(Io&& io, History& h, Cache& c) {
   io(h.max_overlap);
   io(h.tangential_spring);
-  io(h.last_overlap);
-  io(h.active);
-  io(h.constants_cached);
-  io(h.constants);
-  io(h.warm_start);
+  io(h.warm_normal);
+  io(h.warm_valid);
+  io(c.last_overlap);
+  io(c.constants_cached);
+  io(c.constants);
 }
 
 template <typename Io, typename Pair>
@@ -47,16 +48,16 @@ void pair_fields(Io&& io, Pair& pair) {
   io(pair.i);
   io(pair.j);
   io(pair.shift);
-  history_fields(io, pair.history);
+  history_fields(io, pair.history, pair.cache);
 }
 
-constexpr std::uint64_t kStateTag = 0x454c4c43'44454d31ULL;  // "ELLCDEM1"
+constexpr std::uint64_t kStateTag = 0x454c4c43'44454d32ULL;  // "ELLCDEM2": the shared history record (was 1)
 
 }  // namespace
 
 // Found by argument-dependent lookup from the vector templates of binary_io.hpp.
-void put(std::ostream& out, const ContactHistory& history) { history_fields(Writer{out}, history); }
-void get(std::istream& in, ContactHistory& history) { history_fields(Reader{in}, history); }
+void put(std::ostream& out, const WallContact& wall) { history_fields(Writer{out}, wall.history, wall.cache); }
+void get(std::istream& in, WallContact& wall) { history_fields(Reader{in}, wall.history, wall.cache); }
 void put(std::ostream& out, const PairSlot& pair) { pair_fields(Writer{out}, pair); }
 void get(std::istream& in, PairSlot& pair) { pair_fields(Reader{in}, pair); }
 

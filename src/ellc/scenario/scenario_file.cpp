@@ -6,8 +6,9 @@
 #include <fstream>
 #include <sstream>
 
-#include "ellc/engine/scenario.hpp"
-#include "ellc/io/case_file.hpp"
+#include "ellc/cases/case_file.hpp"
+#include "ellc/contact/contact_parameters.hpp"
+#include "ellc/scenario/scenario.hpp"
 #include "ellc/io/input_error.hpp"
 #include "ellc/io/table_reader.hpp"
 
@@ -36,18 +37,23 @@ double non_negative_or(TableReader& table, std::string_view key, double fallback
   return table.non_negative(key);
 }
 
+// The shared contact-model vocabulary (src/ellc/contact/contact_parameters.hpp), plus the walls' μ.
 void read_contact(TableReader& table, ContactSettings& contact) {
-  contact.normal_model =
-      table.choice("normal", {"becker_kamlah", "hertz"}, "becker_kamlah") == "hertz" ? NormalModel::hertz
-                                                                                     : NormalModel::becker_kamlah;
-  contact.damping_ratio = non_negative_or(table, "damping_ratio", contact.damping_ratio);
-  if (contact.damping_ratio >= 1.0) table.fail("damping_ratio", contact.damping_ratio, "a number in [0, 1)");
-  contact.friction = non_negative_or(table, "friction", contact.friction);
+  ContactModelBuilder builder(contact.model);
+  for (const ContactParameterName& parameter : kContactParameters) {
+    if (!table.has(parameter.name)) continue;
+    if (parameter.kind == ParameterKind::choice) {
+      const std::string value = table.optional_string(parameter.name).value_or("");
+      if (std::string expected = builder.set(parameter.name, value); !expected.empty())
+        table.fail(parameter.name, "\"" + value + "\"", expected);
+    } else {
+      const double value = table.number(parameter.name);
+      if (std::string expected = builder.set(parameter.name, value); !expected.empty())
+        table.fail(parameter.name, value, expected);
+    }
+  }
+  contact.model = builder.finish();
   contact.wall_friction = non_negative_or(table, "wall_friction", contact.wall_friction);
-  contact.narrow_phase_final_step = positive_or(table, "narrow_phase_final_step", contact.narrow_phase_final_step);
-  if (contact.narrow_phase_final_step > 0.1)
-    table.fail("narrow_phase_final_step", contact.narrow_phase_final_step,
-               "a Newton step length in (0, 0.1] rad (1e-9 solves the common normal to rounding)");
   table.finish();
 }
 
@@ -168,8 +174,8 @@ Scenario read(const toml::table& root_table, const std::string& source, std::str
   }
   if (auto model = root.optional_table("model")) {
     const ModelSpec spec = read_model(*model);
-    scenario.contact.hertz = spec.hertz;
-    scenario.contact.law = spec.law;
+    scenario.contact.model.hertz = spec.hertz;
+    scenario.contact.model.law = spec.law;
   }
   if (auto contact = root.optional_table("contact")) read_contact(*contact, scenario.contact);
   {

@@ -1,4 +1,4 @@
-#include "ellc/io/case_file.hpp"
+#include "ellc/cases/case_file.hpp"
 
 #include <cmath>
 #include <numbers>

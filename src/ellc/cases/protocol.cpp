@@ -1,4 +1,4 @@
-#include "ellc/io/protocol.hpp"
+#include "ellc/cases/protocol.hpp"
 
 namespace ellc {
 

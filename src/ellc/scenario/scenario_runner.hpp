@@ -11,7 +11,7 @@
 #include <optional>
 #include <string>
 
-#include "ellc/engine/scenario.hpp"
+#include "ellc/scenario/scenario.hpp"
 #include "ellc/engine/simulation.hpp"
 
 namespace ellc::engine {

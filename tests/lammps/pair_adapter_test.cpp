@@ -1,13 +1,14 @@
 // The LAMMPS-free parts of pair_style ellipsoid/bk: pair_coeff parsing and mixing, and the
-// per-pair force model (normal law, damping, friction, history) on simple configurations.
+// adapter to the shared contact model (normal law, damping, friction, history record).
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <vector>
 
-#include "contact_model.hpp"
+#include "ellc/engine/rigid_body.hpp"
 #include "ellc/law/contact_constants.hpp"
+#include "pair_adapter.hpp"
 #include "pair_coefficients.hpp"
 
 namespace ellc_lammps {
@@ -21,13 +22,13 @@ TEST(PairCoefficients, ParsesPositionalValuesAndKeywords) {
   EXPECT_EQ(c.material.youngs_modulus, 142000.0);
   EXPECT_EQ(c.material.poisson_ratio, 0.25);
   EXPECT_EQ(c.material.yield_stress, 7900.0);
-  EXPECT_EQ(c.friction, 0.3);
-  EXPECT_EQ(c.normal_damping, 0.1);
-  EXPECT_EQ(c.law.fit.lambda_amplitude, 1.0);
-  EXPECT_EQ(c.law.fit.lambda_rate, -4.0);
-  EXPECT_EQ(c.law.fit.lambda_offset, 2.5);
-  EXPECT_EQ(c.law.fit.transition_exponent, 2.0);
-  EXPECT_EQ(c.law.fit.epsilon_amplitude, ellc::TransitionFit{}.epsilon_amplitude);  // default kept
+  EXPECT_EQ(c.model.friction, 0.3);
+  EXPECT_EQ(c.model.normal_damping, 0.1);
+  EXPECT_EQ(c.model.law.fit.lambda_amplitude, 1.0);
+  EXPECT_EQ(c.model.law.fit.lambda_rate, -4.0);
+  EXPECT_EQ(c.model.law.fit.lambda_offset, 2.5);
+  EXPECT_EQ(c.model.law.fit.transition_exponent, 2.0);
+  EXPECT_EQ(c.model.law.fit.epsilon_amplitude, ellc::TransitionFit{}.epsilon_amplitude);  // default kept
 }
 
 TEST(PairCoefficients, RejectsBadInputWithTheFieldName) {
@@ -47,13 +48,13 @@ TEST(PairCoefficients, MixesMaterialsByEquationThreeAndTheSofterYield) {
   const auto steel = parse_coefficients({"210000", "0.3", "900", "friction", "0.4"}).coefficients;
   const auto nmc = parse_coefficients({"142000", "0.25", "7900", "friction", "0.1"}).coefficients;
   std::string error;
-  const PairCoefficients mixed = mixed_pair(steel, nmc, error);
+  const ellc::InteractionContext mixed = mixed_pair(steel, nmc, error);
   EXPECT_EQ(error, "");
   const double expected = 1.0 / ((1 - 0.09) / 210000.0 + (1 - 0.0625) / 142000.0);
   EXPECT_NEAR(mixed.material.effective_modulus, expected, 1e-9 * expected);
   EXPECT_EQ(mixed.material.yield_stress, 900.0);
-  EXPECT_NEAR(mixed.friction, 0.2, 1e-15);
-  const PairCoefficients same = explicit_pair(nmc);
+  EXPECT_NEAR(mixed.model.friction, 0.2, 1e-15);
+  const ellc::InteractionContext same = explicit_pair(nmc);
   EXPECT_NEAR(same.material.effective_modulus, 142000.0 / (2 * (1 - 0.0625)), 1e-9);
 }
 
@@ -76,16 +77,16 @@ TEST(PairCoefficients, SerializationRoundTrips) {
 // Two equal NMC spheres of radius 5 along x: R_e = 2.5, Hertz until δ_Y.
 struct SpherePair : ::testing::Test {
   BodyState a, b;
-  PairCoefficients coefficients;
-  std::vector<double> history = std::vector<double>(static_cast<std::size_t>(HistoryLayout::size()), 0.0);
+  ellc::InteractionContext coefficients;
+  std::vector<double> history = std::vector<double>(static_cast<std::size_t>(kHistoryDoubles), 0.0);
   SpherePair() {
     a.semi_axes = b.semi_axes = Eigen::Vector3d::Constant(5.0);
     a.mass = b.mass = 2.0;
     coefficients = explicit_pair(parse_coefficients({"142000", "0.25", "7900"}).coefficients);
   }
-  PairResult at_overlap(double overlap) {
+  PairEvaluation at_overlap(double overlap) {
     b.position = {10.0 - overlap, 0.0, 0.0};
-    return evaluate_pair(a, b, coefficients, ellc::HertzMode::hale, 1e-3, history.data());
+    return evaluate_pair(a, b, coefficients, 1e-3, history.data());
   }
 };
 
@@ -93,31 +94,33 @@ TEST_F(SpherePair, NormalForceIsTheLawAndPointsFromAToB) {
   const auto result = at_overlap(0.01);
   ASSERT_TRUE(result.touching);
   const auto constants = ellc::make_contact_constants(coefficients.material, {0.2, 0.2}, {0.2, 0.2}, 0.0, 10.0,
-                                                      ellc::HertzMode::hale, coefficients.law);
+                                                      ellc::HertzMode::hale, coefficients.model.law);
   const double expected = ellc::evaluate_contact(constants, result.overlap, 0.0).force;
   EXPECT_NEAR(result.force_on_b.x(), expected, 1e-12 * expected);
   EXPECT_NEAR(result.force_on_b.y(), 0.0, 1e-12 * expected);
   EXPECT_NEAR(result.torque_on_a.norm() + result.torque_on_b.norm(), 0.0, 1e-9 * expected);
-  EXPECT_DOUBLE_EQ(history[HistoryLayout::max_overlap], result.overlap);
+  EXPECT_DOUBLE_EQ(ellc::ContactHistory::read_from(history.data()).max_overlap, result.overlap);
 }
 
 TEST_F(SpherePair, KeepsTheLargestOverlapAndForgetsItOnSeparation) {
   (void)at_overlap(1.0);
-  const double deepest = history[HistoryLayout::max_overlap];
+  const double deepest = ellc::ContactHistory::read_from(history.data()).max_overlap;
   const auto unloading = at_overlap(0.9);
-  EXPECT_EQ(history[HistoryLayout::max_overlap], deepest);
+  EXPECT_EQ(ellc::ContactHistory::read_from(history.data()).max_overlap, deepest);
   EXPECT_EQ(unloading.law.regime, ellc::Regime::unloading);
   const auto apart = at_overlap(-0.1);
   EXPECT_FALSE(apart.touching);
   // δ_* and the spring are gone; only the separating axis stays, as the narrow phase's warm start.
-  for (int k = 0; k < HistoryLayout::warm_normal; ++k) EXPECT_EQ(history[static_cast<std::size_t>(k)], 0.0);
+  const ellc::ContactHistory record = ellc::ContactHistory::read_from(history.data());
+  EXPECT_EQ(record.max_overlap, 0.0);
+  EXPECT_EQ(record.spring().norm(), 0.0);
   EXPECT_TRUE(apart.keep_warm_start);
-  EXPECT_NEAR(history[HistoryLayout::warm_normal], 1.0, 1e-12);  // the line of centres, a to b
+  EXPECT_NEAR(record.warm_normal[0], 1.0, 1e-12);  // the line of centres, a to b
 }
 
 TEST_F(SpherePair, FrictionIsCappedByCoulombAndDampingOpposesApproach) {
-  coefficients.friction = 0.2;
-  coefficients.normal_damping = 0.3;
+  coefficients.model.friction = 0.2;
+  coefficients.model.normal_damping = 0.3;
   b.velocity = {-1.0, 50.0, 0.0};  // approaching and sliding fast along y
   const auto result = at_overlap(0.05);
   ASSERT_TRUE(result.touching);
@@ -142,10 +145,10 @@ TEST(EllipsoidPair, ConservesMomentumAndAngularMomentumInAGeneralPose) {
   b.angular_velocity = {0.0, 3.0, -1.0};
   a.mass = 3.0;
   b.mass = 1.5;
-  const PairCoefficients c =
+  const ellc::InteractionContext c =
       explicit_pair(parse_coefficients({"142000", "0.25", "7900", "friction", "0.3", "damping", "0.2"}).coefficients);
-  std::vector<double> history(static_cast<std::size_t>(HistoryLayout::size()), 0.0);
-  const PairResult result = evaluate_pair(a, b, c, ellc::HertzMode::hale, 1e-3, history.data());
+  std::vector<double> history(static_cast<std::size_t>(kHistoryDoubles), 0.0);
+  const PairEvaluation result = evaluate_pair(a, b, c, 1e-3, history.data());
   ASSERT_TRUE(result.touching);
   EXPECT_GT(result.overlap, 0.0);
   EXPECT_GT(result.normal.dot(b.position - a.position), 0.0);  // normal points from a to b
@@ -154,24 +157,29 @@ TEST(EllipsoidPair, ConservesMomentumAndAngularMomentumInAGeneralPose) {
                                  (b.position - a.position).cross(result.force_on_b);
   EXPECT_LT(moment.norm(), 1e-9 * result.force_on_b.norm() * 10.0);
   // The warm start is kept for the next step, and a second evaluation from it agrees.
-  EXPECT_EQ(history[HistoryLayout::warm_valid], 1.0);
-  std::vector<double> again = history;
-  again[HistoryLayout::spring] = again[HistoryLayout::spring + 1] = again[HistoryLayout::spring + 2] = 0.0;
-  std::vector<double> cold(static_cast<std::size_t>(HistoryLayout::size()), 0.0);
-  const PairResult warm_result = evaluate_pair(a, b, c, ellc::HertzMode::hale, 1e-3, again.data());
-  const PairResult cold_result = evaluate_pair(a, b, c, ellc::HertzMode::hale, 1e-3, cold.data());
+  EXPECT_EQ(ellc::ContactHistory::read_from(history.data()).warm_valid, 1.0);
+  ellc::ContactHistory warm_record = ellc::ContactHistory::read_from(history.data());
+  warm_record.tangential_spring = {};
+  std::vector<double> again(static_cast<std::size_t>(kHistoryDoubles), 0.0);
+  warm_record.write_to(again.data());
+  std::vector<double> cold(static_cast<std::size_t>(kHistoryDoubles), 0.0);
+  const PairEvaluation warm_result = evaluate_pair(a, b, c, 1e-3, again.data());
+  const PairEvaluation cold_result = evaluate_pair(a, b, c, 1e-3, cold.data());
   EXPECT_NEAR(warm_result.overlap, cold_result.overlap, 1e-12);
 }
 
 TEST(AngularVelocity, IsMomentumOverInertiaForASphereAndRotatesWithTheBody) {
   const Eigen::Vector3d momentum{1.0, -2.0, 0.5};
+  using ellc::engine::angular_velocity_from_momentum;
+  using ellc::engine::solid_ellipsoid_inertia;
   const Eigen::Vector3d sphere =
-      angular_velocity(momentum, Eigen::Quaterniond(Eigen::AngleAxisd(0.7, Eigen::Vector3d::UnitZ())),
-                       Eigen::Vector3d::Constant(2.0), 5.0);
+      angular_velocity_from_momentum(momentum, Eigen::Quaterniond(Eigen::AngleAxisd(0.7, Eigen::Vector3d::UnitZ())),
+                                     solid_ellipsoid_inertia(5.0, Eigen::Vector3d::Constant(2.0)));
   EXPECT_TRUE(sphere.isApprox(momentum / (0.4 * 5.0 * 4.0), 1e-14));
   // A rod spinning about its long body axis x, turned so that x points along space y.
   const Eigen::Quaterniond turned(Eigen::AngleAxisd(M_PI / 2, Eigen::Vector3d::UnitZ()));
-  const Eigen::Vector3d spin = angular_velocity({0.0, 1.0, 0.0}, turned, {3.0, 1.0, 1.0}, 1.0);
+  const Eigen::Vector3d spin =
+      angular_velocity_from_momentum({0.0, 1.0, 0.0}, turned, solid_ellipsoid_inertia(1.0, {3.0, 1.0, 1.0}));
   EXPECT_NEAR(spin.y(), 1.0 / (0.2 * 2.0), 1e-12);
   EXPECT_NEAR(spin.x(), 0.0, 1e-12);
 }

@@ -10,9 +10,9 @@
 #include <vector>
 
 #include "ellc/geometry/narrow_phase.hpp"
-#include "ellc/geometry/normal_contact.hpp"
+#include "ellc/contact/normal_contact.hpp"
 #include "ellc/geometry/tip_contact.hpp"
-#include "geometry_test_support.hpp"
+#include "support/geometry_support.hpp"
 
 namespace ellc {
 namespace {

@@ -1,4 +1,4 @@
-#include "ellc/geometry/normal_contact.hpp"
+#include "ellc/contact/normal_contact.hpp"
 
 namespace ellc {
 

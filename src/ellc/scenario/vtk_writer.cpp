@@ -1,4 +1,4 @@
-#include "ellc/engine/vtk_writer.hpp"
+#include "ellc/scenario/vtk_writer.hpp"
 
 #include <fstream>
 #include <stdexcept>

@@ -1,11 +1,11 @@
-// The tangential history spring with Coulomb's limit (src/ellc/response/tangential_spring.hpp).
+// The tangential history spring with Coulomb's limit (src/ellc/contact/tangential_spring.hpp).
 #include <gtest/gtest.h>
 
 #include <Eigen/Geometry>
 #include <cmath>
 #include <random>
 
-#include "ellc/response/tangential_spring.hpp"
+#include "ellc/contact/tangential_spring.hpp"
 
 namespace {
 using namespace ellc;

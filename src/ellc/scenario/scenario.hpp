@@ -8,7 +8,7 @@
 #include <string_view>
 #include <vector>
 
-#include "ellc/engine/packing.hpp"
+#include "ellc/scenario/packing.hpp"
 #include "ellc/engine/settings.hpp"
 
 namespace ellc::engine {

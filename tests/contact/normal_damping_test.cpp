@@ -1,9 +1,9 @@
-// Viscous damping and the damped normal force (src/ellc/response/normal_damping.hpp).
+// Viscous damping and the damped normal force (src/ellc/contact/normal_damping.hpp).
 #include <gtest/gtest.h>
 
 #include <cmath>
 
-#include "ellc/response/normal_damping.hpp"
+#include "ellc/contact/normal_damping.hpp"
 
 namespace {
 using namespace ellc;

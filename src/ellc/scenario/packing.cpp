@@ -1,4 +1,4 @@
-#include "ellc/engine/packing.hpp"
+#include "ellc/scenario/packing.hpp"
 
 #include <algorithm>
 #include <array>
@@ -8,7 +8,8 @@
 #include <unordered_map>
 #include <vector>
 
-#include "ellc/engine/random.hpp"
+#include "ellc/geometry/narrow_phase.hpp"
+#include "ellc/scenario/random.hpp"
 
 namespace ellc::engine {
 
@@ -154,6 +155,15 @@ ParticleSet generate_packing(const PackingSpec& spec, const Box& box, double flo
     particles.add(static_cast<std::uint32_t>(rank), particle.axes, spec.density, particle.centre, particle.rotation);
   }
   return particles;
+}
+
+OverlapTest ellipsoid_overlap_test(double margin) {
+  return [margin](const Eigen::Vector3d& axes_a, const Eigen::Vector3d& centre_a, const Eigen::Quaterniond& rotation_a,
+                  const Eigen::Vector3d& axes_b, const Eigen::Vector3d& centre_b, const Eigen::Quaterniond& rotation_b) {
+    const Ellipsoid a(axes_a * (1.0 + margin), Pose{centre_a, rotation_a});
+    const Ellipsoid b(axes_b * (1.0 + margin), Pose{centre_b, rotation_b});
+    return ellipsoid_contact(a, b).status != NarrowPhaseStatus::separated;  // failed counts as overlap
+  };
 }
 
 }  // namespace ellc::engine

@@ -1,4 +1,4 @@
-#include "ellc/engine/scenario_runner.hpp"
+#include "ellc/scenario/scenario_runner.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -8,9 +8,9 @@
 #include <vector>
 
 #include "ellc/engine/binary_io.hpp"
-#include "ellc/engine/packing.hpp"
+#include "ellc/scenario/packing.hpp"
 #include "ellc/engine/time_step.hpp"
-#include "ellc/engine/vtk_writer.hpp"
+#include "ellc/scenario/vtk_writer.hpp"
 #include "ellc/io/input_error.hpp"
 
 namespace ellc::engine {
