@@ -6,6 +6,7 @@
 #include <cmath>
 #include <vector>
 
+#include "ellc/contact/pair_contact.hpp"
 #include "ellc/engine/rigid_body.hpp"
 #include "ellc/law/contact_constants.hpp"
 #include "pair_adapter.hpp"
@@ -166,6 +167,71 @@ TEST(EllipsoidPair, ConservesMomentumAndAngularMomentumInAGeneralPose) {
   const PairEvaluation warm_result = evaluate_pair(a, b, c, 1e-3, again.data());
   const PairEvaluation cold_result = evaluate_pair(a, b, c, 1e-3, cold.data());
   EXPECT_NEAR(warm_result.overlap, cold_result.overlap, 1e-12);
+}
+
+TEST(PairCoefficients, SharedContactVocabularyAndTheOlderNames) {
+  const auto c = parse_coefficients({"142000", "0.25", "7900", "damping", "0.2", "tangential_damping", "0.1",
+                                     "damping_model", "hertz_tangent", "normal", "hertz"})
+                     .coefficients;
+  EXPECT_EQ(c.model.normal_damping, 0.2);  // `damping` is normal_damping's older name
+  EXPECT_EQ(c.model.tangential_damping, 0.1);
+  EXPECT_EQ(c.model.damping, ellc::DampingModel::hertz_tangent);
+  EXPECT_EQ(c.model.normal, ellc::NormalModel::hertz);
+  EXPECT_EQ(c.model.tangential, ellc::TangentialModel::mindlin);  // the engine's default
+  const auto ratio = parse_coefficients({"142000", "0.25", "7900", "tangential_stiffness", "0.8"}).coefficients;
+  EXPECT_EQ(ratio.model.tangential, ellc::TangentialModel::ratio);  // old inputs keep their meaning
+  EXPECT_NE(parse_coefficients({"1", "0.2", "3", "normal", "thornton"}).error.find("normal = thornton: expected "
+                                                                                   "becker_kamlah or hertz"),
+            std::string::npos);
+  EXPECT_NE(parse_coefficients({"1", "0.2", "3", "damping_ratio", "1.5"}).error.find("damping_ratio = 1.5"),
+            std::string::npos);
+  const auto a = parse_coefficients({"1", "0.2", "3"}).coefficients;
+  const auto b = parse_coefficients({"1", "0.2", "3", "tangential_model", "ratio"}).coefficients;
+  std::string error;
+  (void)mixed_pair(a, b, error);
+  EXPECT_NE(error.find("different sub-models"), std::string::npos);
+}
+
+// pair_style ellipsoid/bk runs the built-in engine's contact model: the same bodies, history and
+// parameters give the same forces, bit for bit, through the adapter and through the shared code.
+TEST(OneContactModel, AdapterGivesExactlyTheSharedPairForces) {
+  BodyState a, b;
+  a.semi_axes = {6.0, 5.0, 4.2};
+  b.semi_axes = {3.0, 5.5, 4.0};
+  a.orientation = Eigen::Quaterniond(Eigen::AngleAxisd(0.4, Eigen::Vector3d(1, 2, 3).normalized()));
+  b.orientation = Eigen::Quaterniond(Eigen::AngleAxisd(-1.1, Eigen::Vector3d(-2, 1, 0.5).normalized()));
+  a.position = {0.3, -0.2, 0.1};
+  b.position = {8.0, 2.0, -1.5};
+  a.velocity = {0.5, 0.1, 0.0};
+  b.angular_velocity = {0.0, 3.0, -1.0};
+  a.mass = 3.0;
+  b.mass = 1.5;
+  const ellc::InteractionContext context = explicit_pair(
+      parse_coefficients({"142000", "0.25", "7900", "friction", "0.3", "damping_ratio", "0.2"}).coefficients);
+  std::vector<double> stored(static_cast<std::size_t>(kHistoryDoubles), 0.0);
+  PairEvaluation through_adapter;
+  for (int step = 0; step < 3; ++step) through_adapter = evaluate_pair(a, b, context, 1e-3, stored.data());
+
+  ellc::ContactHistory history;
+  ellc::PairForces shared;
+  const ellc::Ellipsoid shape_a(a.semi_axes, {a.position, a.orientation});
+  const ellc::Ellipsoid shape_b(b.semi_axes, {b.position, b.orientation});
+  for (int step = 0; step < 3; ++step) {
+    ellc::ContactCache cache;
+    const ellc::PairSolution solution =
+        ellc::solve_pair({a.semi_axes, a.position, a.orientation, shape_a.mean_radius(), &shape_a},
+                         {b.semi_axes, b.position, b.orientation, shape_b.mean_radius(), &shape_b}, false, history,
+                         cache, context);
+    ASSERT_EQ(solution.status, ellc::PairStatus::contact);
+    shared = ellc::pair_forces(solution, a.position, {a.velocity, a.angular_velocity, a.mass}, b.position,
+                               {b.velocity, b.angular_velocity, b.mass}, context, 1e-3, history);
+  }
+  EXPECT_EQ(through_adapter.force_on_b, shared.force_on_j);
+  EXPECT_EQ(through_adapter.torque_on_a, shared.torque_on_i);
+  EXPECT_EQ(through_adapter.torque_on_b, shared.torque_on_j);
+  double flat[ellc::ContactHistory::kDoubles];
+  history.write_to(flat);
+  for (std::size_t k = 0; k < ellc::ContactHistory::kDoubles; ++k) EXPECT_EQ(stored[k], flat[k]) << k;
 }
 
 TEST(AngularVelocity, IsMomentumOverInertiaForASphereAndRotatesWithTheBody) {
