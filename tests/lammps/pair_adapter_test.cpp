@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <utility>
 #include <vector>
 
 #include "ellc/contact/pair_contact.hpp"
@@ -134,7 +135,8 @@ TEST_F(SpherePair, FrictionIsCappedByCoulombAndDampingOpposesApproach) {
   EXPECT_TRUE(result.torque_on_a.isApprox(result.torque_on_b, 1e-12));
 }
 
-TEST(EllipsoidPair, ConservesMomentumAndAngularMomentumInAGeneralPose) {
+// Two ellipsoids in general poses, overlapping, moving and spinning.
+std::pair<BodyState, BodyState> general_pose_pair() {
   BodyState a, b;
   a.semi_axes = {6.0, 5.0, 4.2};
   b.semi_axes = {3.0, 5.5, 4.0};
@@ -146,6 +148,11 @@ TEST(EllipsoidPair, ConservesMomentumAndAngularMomentumInAGeneralPose) {
   b.angular_velocity = {0.0, 3.0, -1.0};
   a.mass = 3.0;
   b.mass = 1.5;
+  return {a, b};
+}
+
+TEST(EllipsoidPair, ConservesMomentumAndAngularMomentumInAGeneralPose) {
+  const auto [a, b] = general_pose_pair();
   const ellc::InteractionContext c =
       explicit_pair(parse_coefficients({"142000", "0.25", "7900", "friction", "0.3", "damping", "0.2"}).coefficients);
   std::vector<double> history(static_cast<std::size_t>(kHistoryDoubles), 0.0);
@@ -195,17 +202,7 @@ TEST(PairCoefficients, SharedContactVocabularyAndTheOlderNames) {
 // pair_style ellipsoid/bk runs the built-in engine's contact model: the same bodies, history and
 // parameters give the same forces, bit for bit, through the adapter and through the shared code.
 TEST(OneContactModel, AdapterGivesExactlyTheSharedPairForces) {
-  BodyState a, b;
-  a.semi_axes = {6.0, 5.0, 4.2};
-  b.semi_axes = {3.0, 5.5, 4.0};
-  a.orientation = Eigen::Quaterniond(Eigen::AngleAxisd(0.4, Eigen::Vector3d(1, 2, 3).normalized()));
-  b.orientation = Eigen::Quaterniond(Eigen::AngleAxisd(-1.1, Eigen::Vector3d(-2, 1, 0.5).normalized()));
-  a.position = {0.3, -0.2, 0.1};
-  b.position = {8.0, 2.0, -1.5};
-  a.velocity = {0.5, 0.1, 0.0};
-  b.angular_velocity = {0.0, 3.0, -1.0};
-  a.mass = 3.0;
-  b.mass = 1.5;
+  const auto [a, b] = general_pose_pair();
   const ellc::InteractionContext context = explicit_pair(
       parse_coefficients({"142000", "0.25", "7900", "friction", "0.3", "damping_ratio", "0.2"}).coefficients);
   std::vector<double> stored(static_cast<std::size_t>(kHistoryDoubles), 0.0);

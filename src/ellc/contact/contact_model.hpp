@@ -3,7 +3,7 @@
 // LAMMPS's granular model (normal, damping, tangential), and the force of one touching contact.
 // The built-in engine (src/ellc/engine/simulation.cpp) and pair_style ellipsoid/bk
 // (integrations/lammps/pair_ellipsoid_bk.cpp) both call contact_forces() / wall_forces(), so a
-// study moves between them with the same physics. docs/model.md §7 documents every sub-model.
+// study moves between them with the same physics. docs/contact_model.md documents every sub-model.
 //
 //  normal      becker_kamlah   the elastoplastic law, evaluate_contact() (src/ellc/law/contact_law.hpp)
 //              hertz           the same law with a yield stress it never reaches (purely elastic)

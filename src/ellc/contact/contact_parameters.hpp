@@ -2,7 +2,7 @@
 // The names of the contact model's parameters, one vocabulary for both inputs: the [contact]
 // table of an `ellc dem` scenario and the keywords of LAMMPS's pair_coeff. Each reader only
 // splits its own syntax into (name, value) and hands them here; the meaning of a name, its
-// range and its error message exist once (docs/model.md §7 lists them).
+// range and its error message exist once (docs/contact_model.md lists them).
 //
 //   normal                 becker_kamlah | hertz
 //   damping_model          contact_radius | hertz_tangent
