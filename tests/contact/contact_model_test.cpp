@@ -193,5 +193,41 @@ TEST(PairContact, ForcesBalanceAndTorquesConserveAngularMomentum) {
   EXPECT_LT(moment.norm(), 1e-12 * forces.force_on_j.norm() * (c_j - c_i).norm());
 }
 
+// A sphere pressed on a flat, below yield: exact Hertz, F = 4/3 E_e sqrt(R) δ^{3/2} with R_e = R
+// (the flat has no curvature) and E_e from eq. (3): the sphere's E/(1 − ν²) alone on a rigid
+// flat, both compliances on an elastic one.
+TEST(WallContactModel, SphereOnAFlatIsExactHertzWithTheWallsMaterial) {
+  const double radius = 5.0;
+  const Eigen::Vector3d axes = Eigen::Vector3d::Constant(radius);
+  const Eigen::Quaterniond identity = Eigen::Quaterniond::Identity();
+  const Material steel{210000.0, 0.3, 1500.0};
+  for (const bool as_ellipsoid : {false, true}) {
+    for (const Material& wall : {rigid_material(), steel}) {
+      const InteractionContext context = make_interaction(ContactModel{}, kNmc, wall);
+      const double e_e = wall.youngs_modulus == rigid_material().youngs_modulus
+                             ? kNmc.youngs_modulus / (1.0 - kNmc.poisson_ratio * kNmc.poisson_ratio)
+                             : 1.0 / ((1.0 - 0.0625) / kNmc.youngs_modulus + (1.0 - 0.09) / steel.youngs_modulus);
+      EXPECT_NEAR(context.material.effective_modulus, e_e, 1e-12 * e_e);
+      const double overlap = 0.004;  // δ_Y ≈ 0.0085 µm on the steel plate, 0.086 µm on the rigid one
+      const Ellipsoid shape(axes, Pose{Eigen::Vector3d(0.0, 0.0, radius - overlap), identity});
+      const BodyRef body{axes, shape.center(), identity, radius, as_ellipsoid ? &shape : nullptr};
+      ContactHistory history;
+      ContactCache cache;
+      const PairSolution solution = solve_wall(body, WallPlane{0.0, 1}, !as_ellipsoid, history, cache, context);
+      ASSERT_EQ(solution.status, PairStatus::contact);
+      EXPECT_EQ(solution.law.regime, Regime::elastic);
+      const double hertz = 4.0 / 3.0 * e_e * std::sqrt(radius) * std::pow(overlap, 1.5);
+      EXPECT_NEAR(solution.law.force, hertz, 1e-9 * hertz) << (as_ellipsoid ? "narrow phase" : "closed form");
+      EXPECT_NEAR(solution.constants->equivalent_radius, radius, 1e-9 * radius);
+    }
+  }
+  // The softer body yields first: a steel plate softer than NMC lowers the contact's Y.
+  EXPECT_EQ(make_interaction(ContactModel{}, kNmc, steel).material.yield_stress, 1500.0);
+  EXPECT_EQ(make_interaction(ContactModel{}, kNmc, rigid_material()).material.yield_stress, kNmc.yield_stress);
+  // Mindlin against a rigid flat: G_e = G_I / (2 − ν_I).
+  const double g = kNmc.youngs_modulus / (2.0 * (1.0 + kNmc.poisson_ratio));
+  EXPECT_NEAR(make_interaction(ContactModel{}, kNmc, rigid_material()).shear_modulus, g / 1.75, 1e-9 * g);
+}
+
 }  // namespace
 }  // namespace ellc

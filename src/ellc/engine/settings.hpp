@@ -6,6 +6,7 @@
 
 #include <array>
 #include <cstddef>
+#include <optional>
 
 #include "ellc/contact/contact_model.hpp"
 #include "ellc/material/material.hpp"
@@ -25,9 +26,12 @@ namespace ellc::engine {
 }
 
 struct ContactSettings {
-  Material material;                               // particles and walls (walls are of the particle material)
+  Material material;                               // the particles
   ContactModel model = engine_contact_defaults();  // particle–particle contacts
   double wall_friction = 0.3;                      // μ against the walls; otherwise the walls use `model`
+  // The walls' material: rigid_material(), an elastic (or elastic–plastic) plate, or, when empty,
+  // the particles' own material (a mirror-image half-space, the behaviour of earlier versions).
+  std::optional<Material> wall_material;
 };
 
 // Periodic in x and y over [0, lx) × [0, ly); walls bound z.

@@ -49,7 +49,7 @@ Simulation::Simulation(const EngineSettings& settings, ParticleSet particles, co
   pair_context_ = make_interaction(contact.model, contact.material, contact.material);
   ContactModel wall_model = contact.model;
   wall_model.friction = contact.wall_friction;
-  wall_context_ = make_interaction(wall_model, contact.material, contact.material);
+  wall_context_ = make_interaction(wall_model, contact.material, contact.wall_material.value_or(contact.material));
   const std::size_t count = particles_.size();
   prepare_derived_arrays();
   for (int wall = 0; wall < 2; ++wall) {
