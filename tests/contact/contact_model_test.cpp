@@ -50,7 +50,7 @@ TEST(ContactModel, BothDampingStiffnessesAreTheHertzTangentOnCircularContacts) {
     const InteractionContext context = make_interaction(model, kNmc, kNmc);
     ContactHistory history;
     const double law = evaluate_contact(constants, overlap, 0.0).force;
-    return contact_force(context, constants, overlap, law, approaching(speed), 1e-3, history).x() - law;
+    return contact_force(context, constants, overlap, law, approaching(speed), 1e-3, history).on_j.x() - law;
   };
   const ContactConstants spheres = constants_for(kNmc, {0.2, 0.2}, {0.2, 0.2});
   EXPECT_NEAR(damped_force(DampingModel::contact_radius, spheres), damped_force(DampingModel::hertz_tangent, spheres),
@@ -84,7 +84,7 @@ TEST(ContactModel, TangentialStiffnessIsMindlinOrTheRatioOfTheNormalOne) {
     ContactHistory history;
     const ContactKinematics kinematics{Eigen::Vector3d::UnitX(), slide * Eigen::Vector3d::UnitY(), 2.0};
     const double law = evaluate_contact(constants, overlap, 0.0).force;
-    const Eigen::Vector3d force = contact_force(context, constants, overlap, law, kinematics, dt, history);
+    const Eigen::Vector3d force = contact_force(context, constants, overlap, law, kinematics, dt, history).on_j;
     EXPECT_NEAR(history.spring().y(), slide * dt, 1e-18);  // stuck: the spring took the whole motion
     return -force.y() / (slide * dt);                       // k_t
   };
@@ -148,14 +148,16 @@ TEST(ContactParameters, OneVocabularyWithRangesAndImpliedRatioModel) {
   EXPECT_NE(validation_error(bad, "[contact]").find("[contact].friction"), std::string::npos);
 }
 
-TEST(ContactHistory, IsEightDoublesInTheDocumentedOrder) {
+TEST(ContactHistory, IsNineDoublesInTheDocumentedOrder) {
   ContactHistory history;
   history.max_overlap = 1.5;
   history.spring() = Eigen::Vector3d(2.0, 3.0, 4.0);
   history.set_warm_start(NarrowPhaseWarmStart{{5.0, 6.0, 7.0}, true});
   double flat[ContactHistory::kDoubles] = {};
   history.write_to(flat);
-  const double expected[ContactHistory::kDoubles] = {1.5, 2.0, 3.0, 4.0, 5.0, 6.0, 7.0, 1.0};
+  history.spring_stiffness = 8.0;
+  history.write_to(flat);
+  const double expected[ContactHistory::kDoubles] = {1.5, 2.0, 3.0, 4.0, 5.0, 6.0, 7.0, 1.0, 8.0};
   for (std::size_t k = 0; k < ContactHistory::kDoubles; ++k) EXPECT_EQ(flat[k], expected[k]) << "double " << k;
   const ContactHistory back = ContactHistory::read_from(flat);
   EXPECT_EQ(back.warm_start().normal, history.warm_start().normal);

@@ -5,6 +5,7 @@
 #include <utility>
 
 #include "ellc/contact/normal_damping.hpp"
+#include "ellc/law/contact_law.hpp"
 #include "ellc/contact/tangential_spring.hpp"
 
 namespace ellc {
@@ -53,11 +54,24 @@ double effective_shear_modulus(const Material& body_i, const Material& body_j) n
   return 1.0 / ((2.0 - body_i.poisson_ratio) / shear(body_i) + (2.0 - body_j.poisson_ratio) / shear(body_j));
 }
 
-// The normal stiffness the dashpot (and the ratio spring) scale with.
-double normal_stiffness(DampingModel model, const ContactConstants& constants, double overlap,
-                        double contact_radius) noexcept {
-  if (model == DampingModel::hertz_tangent) return 1.5 * constants.hertz_coefficient * std::sqrt(overlap);
-  return 2.0 * constants.effective_modulus * contact_radius;
+// The contact's size and the normal stiffness the dashpot (and the ratio spring) scale with, on
+// the elastic branch the contact is on (law/contact_law.hpp, elastic_branch).
+struct BranchStiffness {
+  double contact_radius = 0.0;  // c, eq. (9) with the branch's radius
+  double normal = 0.0;          // k_n
+};
+
+BranchStiffness branch_stiffness(DampingModel model, const ContactConstants& constants, double overlap,
+                                 double max_overlap) noexcept {
+  const ElasticBranch branch = elastic_branch(constants, overlap, std::max(max_overlap, overlap));
+  const double x = std::max(branch.elastic_overlap, 0.0);
+  BranchStiffness stiffness;
+  stiffness.contact_radius = branch.radius_scale == 1.0
+                                 ? std::sqrt(constants.contact_radius_sq_per_overlap * x)
+                                 : std::sqrt(constants.contact_radius_sq_per_overlap * branch.radius_scale * x);
+  stiffness.normal = model == DampingModel::hertz_tangent ? 1.5 * branch.coefficient * std::sqrt(x)
+                                                          : 2.0 * constants.effective_modulus * stiffness.contact_radius;
+  return stiffness;
 }
 
 }  // namespace
@@ -106,25 +120,57 @@ InteractionContext make_interaction(const ContactModel& model, const Material& b
   return context;
 }
 
-Eigen::Vector3d contact_force(const InteractionContext& context, const ContactConstants& constants, double overlap,
-                              double law_force, const ContactKinematics& kinematics, double dt,
-                              ContactHistory& history) noexcept {
+namespace {
+double tangential_stiffness(const InteractionContext& context, const BranchStiffness& branch) noexcept {
+  return context.model.tangential == TangentialModel::mindlin ? 8.0 * context.shear_modulus * branch.contact_radius
+                                                               : context.model.tangential_stiffness_ratio * branch.normal;
+}
+}  // namespace
+
+ContactForce contact_force(const InteractionContext& context, const ContactConstants& constants, double overlap,
+                           double law_force, const ContactKinematics& kinematics, double dt,
+                           ContactHistory& history) noexcept {
   const ContactModel& model = context.model;
   const Eigen::Vector3d& n = kinematics.normal;
-  const double contact_radius = std::sqrt(constants.contact_radius_sq_per_overlap * std::max(overlap, 0.0));  // c_c, eq. (9)
+  const BranchStiffness branch = branch_stiffness(model.damping, constants, overlap, history.max_overlap);
   const double normal_speed = kinematics.relative_velocity.dot(n);  // > 0 when separating
-  const double k_n = normal_stiffness(model.damping, constants, overlap, contact_radius);
-  const double normal_force =
-      damped_normal_force(law_force, viscous_damping(model.normal_damping, kinematics.effective_mass, k_n), normal_speed);
+  const double normal_force = damped_normal_force(
+      law_force, viscous_damping(model.normal_damping, kinematics.effective_mass, branch.normal), normal_speed);
 
-  const double k_t = model.tangential == TangentialModel::mindlin ? 8.0 * context.shear_modulus * contact_radius
-                                                                   : model.tangential_stiffness_ratio * k_n;
+  ContactForce result;
+  result.damping_dissipation = (law_force - normal_force) * normal_speed * dt;
+  const double k_t = tangential_stiffness(context, branch);
   const TangentialCoefficients tangential{
       k_t, viscous_damping(model.tangential_damping, kinematics.effective_mass, k_t), model.friction};
+  if (!(tangential.stiffness > 0.0) || !(tangential.friction > 0.0)) {
+    history.spring() = Eigen::Vector3d::Zero();
+    history.spring_stiffness = k_t;
+    result.on_j = normal_force * n;
+    return result;
+  }
+  // Incremental spring (Thornton and Yin): a stiffer contact keeps the spring's force (ξ scaled by
+  // k_old/k_t), a softer one keeps ξ so the force shrinks with the contact. Either way the spring
+  // gives up energy, never gains it; what it gives up is booked with friction.
+  const double k_old = history.spring_stiffness;
+  Eigen::Vector3d spring = carry_to_tangent_plane(history.spring(), n);  // its length kept: no work
+  const double energy_before = 0.5 * (k_old > 0.0 ? k_old : k_t) * spring.squaredNorm();
+  if (k_old > 0.0 && k_t > k_old) spring *= k_old / k_t;
+  const double released = energy_before - 0.5 * k_t * spring.squaredNorm();
   const TangentialResponse friction =
-      tangential_response(history.spring(), n, kinematics.relative_velocity, dt, normal_force, tangential);
+      tangential_response(spring, n, kinematics.relative_velocity, dt, normal_force, tangential);
   history.spring() = friction.spring;
-  return normal_force * n + friction.force;
+  history.spring_stiffness = k_t;
+  result.on_j = normal_force * n + friction.force;
+
+  // Energy: what the dissipative forces took from the relative motion over this step.
+  const Eigen::Vector3d tangential_velocity = kinematics.relative_velocity - normal_speed * n;
+  const double tangential_work = -friction.force.dot(tangential_velocity) * dt;
+  const double stored = 0.5 * k_t * (friction.spring.squaredNorm() - spring.squaredNorm());
+  const double dashpot = friction.sliding ? 0.0 : tangential.damping * tangential_velocity.squaredNorm() * dt;
+  result.damping_dissipation += dashpot;
+  result.friction_dissipation = tangential_work - stored - dashpot + released;
+  return result;
 }
+
 
 }  // namespace ellc

@@ -7,13 +7,15 @@
 //
 //  normal      becker_kamlah   the elastoplastic law, evaluate_contact() (src/ellc/law/contact_law.hpp)
 //              hertz           the same law with a yield stress it never reaches (purely elastic)
-//  damping     contact_radius  c = 2 ζ sqrt(m* k), k_n = 2 E_e c_c: the Hertz tangent stiffness
-//                              written with the equivalent contact radius c_c of eq. (9)
-//              hertz_tangent   the same with k_n = dF_H/dδ = 3/2 C δ^{1/2}, F_H = C δ^{3/2} of eq. (10)
+//  damping     contact_radius  c = 2 ζ sqrt(m* k), k_n = 2 E_e c: the Hertz tangent stiffness
+//                              written with the contact radius c of eq. (9) on the current branch
+//              hertz_tangent   the same with k_n = 3/2 C x^{1/2}, the tangent of the branch F = C x^{3/2}
+//  Branch (law/contact_law.hpp, elastic_branch): Hertz while loading, the unloading curve (eq. 49)
+//  with R_e,pmax and x = δ − δ_p below δ_*.
 //  tangential  mindlin         k_t = 8 G_e c_c,  G_e = [ (2 − ν_I)/G_I + (2 − ν_J)/G_J ]⁻¹
 //              ratio           k_t = κ k_n, k_n of the damping sub-model
 // Then F_n = max(0, F_law − c_n v_n) and the Coulomb-limited spring (tangential_spring.hpp), with
-// c_t = 2 ζ_t sqrt(m* k_t).
+// c_t = 2 ζ_t sqrt(m* k_t), updated incrementally: when k_t grows the spring keeps its force.
 
 #include <Eigen/Core>
 
@@ -84,11 +86,20 @@ struct ContactKinematics {
   double effective_mass = 0.0;        // m_I m_J / (m_I + m_J); m_I against a wall
 };
 
+// The force of one contact and the energy its dissipative parts took over the step of length dt
+// in which the bodies moved with the kinematics' relative velocity.
+struct ContactForce {
+  Eigen::Vector3d on_j = Eigen::Vector3d::Zero();
+  double damping_dissipation = 0.0;   // normal dashpot −(F_n − F_law) v_n dt ≥ 0, tangential c_t |v_t|² dt while sticking
+  double friction_dissipation = 0.0;  // tangential work not kept by the spring (sliding): −F_t·v_t dt − ΔE_spring − the above
+};
+
 // Force on J of one touching contact whose law force F_law = law_force was evaluated with
 // `constants` at `overlap`. Updates the history's tangential spring (δ_* is the caller's, from
 // the law's result).
-[[nodiscard]] Eigen::Vector3d contact_force(const InteractionContext& context, const ContactConstants& constants,
-                                            double overlap, double law_force, const ContactKinematics& kinematics,
-                                            double dt, ContactHistory& history) noexcept;
+[[nodiscard]] ContactForce contact_force(const InteractionContext& context, const ContactConstants& constants,
+                                         double overlap, double law_force, const ContactKinematics& kinematics,
+                                         double dt, ContactHistory& history) noexcept;
+
 
 }  // namespace ellc

@@ -21,8 +21,8 @@ void find_candidate_pairs(const ParticleSet& particles, const Box& box, double s
                           std::vector<PairSlot>& pairs);
 
 // Moves the histories of `previous` into `next` where the keys match (both sorted by key).
-// Returns the plastic work of active contacts that dropped out of the list (released as
-// dissipated energy by the caller).
+// Returns the plastic work and the tangential-spring energy of active contacts that dropped out
+// of the list (dissipated; the caller books both with the plastic work).
 double carry_over_history(std::vector<PairSlot>& previous, std::vector<PairSlot>& next) noexcept;
 
 // Wraps x and y into the periodic box.

@@ -47,6 +47,7 @@ struct Wall {
   double velocity = 0.0;
   int side = 1;
   Eigen::Vector3d force = Eigen::Vector3d::Zero();  // total contact force the particles exert on it
+  double work = 0.0;  // work the wall has done on the particles since the start (trapezoidal in time)
 };
 
 struct EngineSettings {

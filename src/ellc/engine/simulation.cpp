@@ -31,14 +31,20 @@ double default_skin(const ParticleSet& particles, const Box& box) noexcept {
   return std::max(0.1 * mean_bounding, std::min(0.2 * mean_bounding, room));
 }
 
-// Ends a contact on separation and returns its plastic work, which the caller books as
-// dissipated. The cache keeps the sphere constants (they do not change) and the history its warm
-// start (the separating axis just found is tested first next step).
-double end_contact(ContactHistory& history, ContactCache& cache) noexcept {
-  const double released = plastic_work(cache.constants, history.max_overlap);
+// What an ended contact leaves behind: its plastic work (dissipated for good) and the energy
+// still in its tangential spring (lost with it, booked with friction).
+struct EndedContact {
+  double plastic_work = 0.0;
+  double spring_energy = 0.0;
+};
+
+// Ends a contact on separation. The cache keeps the sphere constants (they do not change) and the
+// history its warm start (the separating axis just found is tested first next step).
+EndedContact end_contact(ContactHistory& history, ContactCache& cache) noexcept {
+  const EndedContact ended{plastic_work(cache.constants, history.max_overlap), history.spring_energy()};
   history.end_contact();
   cache.last_overlap = 0.0;
-  return released;
+  return ended;
 }
 
 }  // namespace
@@ -143,7 +149,12 @@ void Simulation::step() {
     rebuild_neighbours();
     refresh_body_frames();  // positions were wrapped into the box
   }
+  std::array<double, 2> force_before{walls_[0].force.z(), walls_[1].force.z()};
   compute_forces();
+  // The walls moved by v dt under the average of the forces at both ends of the step (the same
+  // trapezoid the two half kicks give the particles' kinetic energy).
+  for (int w = 0; w < 2; ++w)
+    walls_[w].work -= 0.5 * (force_before[w] + walls_[w].force.z()) * walls_[w].velocity * settings_.dt;
   const std::size_t runaway = kick_and_check(half_dt);
   if (runaway < particles_.size()) report_runaway(runaway);
 }
@@ -245,7 +256,11 @@ void Simulation::evaluate_walls_and_reset(std::size_t slot) {
       continue;
     }
     if (solution.status == PairStatus::separated || solution.law.regime == Regime::separated) {
-      if (solution.status == PairStatus::separated && history.active()) result.released_work = end_contact(history, cache);
+      if (solution.status == PairStatus::separated && history.active()) {
+        const EndedContact ended = end_contact(history, cache);
+        result.released_work = ended.plastic_work;
+        result.friction_dissipation = ended.spring_energy;
+      }
       if (solution.status == PairStatus::contact) result.contact = true;  // overlapping below δ_p: no force, history kept
       reported = holds_something(result) ? 1 : 0;
       continue;
@@ -255,6 +270,8 @@ void Simulation::evaluate_walls_and_reset(std::size_t slot) {
     force -= on_wall.force_on_wall;
     torque -= on_wall.lever_cross_force;
     result.force_on_wall = on_wall.force_on_wall;
+    result.damping_dissipation = on_wall.damping_dissipation;
+    result.friction_dissipation = on_wall.friction_dissipation;
     result.regime = solution.law.regime;
     result.contact = true;
   }
@@ -296,10 +313,11 @@ void Simulation::evaluate_pair(std::size_t index) {
   }
   if (solution.status == PairStatus::separated) {
     if (history.active()) {
-      const double released = end_contact(history, cache);
-      if (released != 0.0) {
+      const EndedContact ended = end_contact(history, cache);
+      if (ended.plastic_work != 0.0 || ended.spring_energy != 0.0) {
         result = PairResult{};
-        result.released_work = released;
+        result.released_work = ended.plastic_work;
+        result.friction_dissipation = ended.spring_energy;
         pair_reported_[index] = 1;
       }
     }
@@ -319,6 +337,8 @@ void Simulation::evaluate_pair(std::size_t index) {
   result.force_on_j = forces.force_on_j;
   result.torque_i = forces.torque_on_i;
   result.torque_j = forces.torque_on_j;
+  result.damping_dissipation = forces.damping_dissipation;
+  result.friction_dissipation = forces.friction_dissipation;
 }
 
 // Where contributions meet. Each particle adds its pair forces to its wall forces in pair-list
@@ -334,6 +354,8 @@ void Simulation::accumulate() {
       if (wall_reported_[w][slot] == 0) continue;
       walls_[w].force += results[slot].force_on_wall;
       released_work_ += results[slot].released_work;
+      damping_dissipation_ += results[slot].damping_dissipation;
+      friction_dissipation_ += results[slot].friction_dissipation;
       failures_ += results[slot].failed ? 1U : 0U;
     }
   }
@@ -360,19 +382,26 @@ void Simulation::accumulate() {
   }
   constexpr std::size_t kChunk = 4096;
   const std::size_t chunks = (pairs_.size() + kChunk - 1) / kChunk;
-  chunk_released_work_.assign(chunks, 0.0);
+  chunk_sums_.assign(chunks, ChunkSums{});
   std::uint64_t failures = 0;
 #pragma omp parallel for schedule(static) reduction(+ : failures) if (parallel)
   for (std::size_t chunk = 0; chunk < chunks; ++chunk) {
-    double released = 0.0;
+    ChunkSums sums;
     for (std::size_t index = chunk * kChunk; index < std::min(pairs_.size(), (chunk + 1) * kChunk); ++index) {
       if (pair_reported_[index] == 0) continue;
-      released += pair_results_[index].released_work;
-      failures += pair_results_[index].failed ? 1U : 0U;
+      const PairResult& result = pair_results_[index];
+      sums.released += result.released_work;
+      sums.damping += result.damping_dissipation;
+      sums.friction += result.friction_dissipation;
+      failures += result.failed ? 1U : 0U;
     }
-    chunk_released_work_[chunk] = released;
+    chunk_sums_[chunk] = sums;
   }
-  for (double released : chunk_released_work_) released_work_ += released;
+  for (const ChunkSums& sums : chunk_sums_) {
+    released_work_ += sums.released;
+    damping_dissipation_ += sums.damping;
+    friction_dissipation_ += sums.friction;
+  }
   failures_ += failures;
 }
 
@@ -419,6 +448,14 @@ double Simulation::contact_elastic_energy() const noexcept {
   for (const auto& pair : pairs_) energy += stored(pair.history, pair.cache);
   for (const auto& walls : wall_history_)
     for (const auto& wall : walls) energy += stored(wall.history, wall.cache);
+  return energy;
+}
+
+double Simulation::spring_energy() const noexcept {
+  double energy = 0.0;
+  for (const auto& pair : pairs_) energy += pair.history.spring_energy();
+  for (const auto& walls : wall_history_)
+    for (const auto& wall : walls) energy += wall.history.spring_energy();
   return energy;
 }
 

@@ -37,6 +37,7 @@ void history_fields(Io&& io, History& h, Cache& c) {
   io(h.tangential_spring);
   io(h.warm_normal);
   io(h.warm_valid);
+  io(h.spring_stiffness);
   io(c.last_overlap);
   io(c.constants_cached);
   io(c.constants);
@@ -67,6 +68,8 @@ void Simulation::state_fields(Io& io, Self& self) {
   io(self.time_);
   io(self.rebuilds_);
   io(self.released_work_);
+  io(self.damping_dissipation_);
+  io(self.friction_dissipation_);
   io(self.failures_);
   io(self.skin_);
   io(self.settings_.dt);
@@ -77,6 +80,7 @@ void Simulation::state_fields(Io& io, Self& self) {
     io(wall.velocity);
     io(wall.side);
     io(wall.force);
+    io(wall.work);
   }
   auto& p = self.particles_;
   io(p.id);
@@ -100,6 +104,8 @@ void Simulation::state_fields(Io& io, Self& self) {
     io(result.torque_i);
     io(result.torque_j);
     io(result.released_work);
+    io(result.damping_dissipation);
+    io(result.friction_dissipation);
     io(result.regime);
     io(result.contact);
     io(result.failed);
@@ -107,6 +113,8 @@ void Simulation::state_fields(Io& io, Self& self) {
   const auto wall_result = [&io](auto& result) {
     io(result.force_on_wall);
     io(result.released_work);
+    io(result.damping_dissipation);
+    io(result.friction_dissipation);
     io(result.regime);
     io(result.contact);
     io(result.failed);

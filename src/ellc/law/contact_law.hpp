@@ -125,4 +125,22 @@ struct LoadingPoint {
           Regime::unloading};
 }
 
+// The elastic curve F = coefficient · x^{3/2} the contact is on, x = δ − offset: Hertz (eq. 10)
+// while loading or if the contact never yielded, the unloading branch (eq. 49) below δ_*. Its
+// contact radius follows eq. (9) with the branch's radius, c² = (c_c²/δ) · radius_scale · x, where
+// radius_scale is R_e,pmax/R_e on unloading and 1 otherwise. Stiffnesses that scale with the
+// contact size (damping, tangential spring) use this radius, so they follow the branch.
+struct ElasticBranch {
+  double coefficient = 0.0;      // C or C_UL
+  double elastic_overlap = 0.0;  // x = δ, or δ − δ_p on unloading
+  double radius_scale = 1.0;     // R/R_e
+};
+
+[[nodiscard]] inline ElasticBranch elastic_branch(const ContactConstants& c, double overlap,
+                                                  double max_overlap) noexcept {
+  if (overlap >= max_overlap || max_overlap <= c.yield_overlap) return {c.hertz_coefficient, overlap, 1.0};
+  const UnloadingBranch branch = unloading_branch(c, max_overlap);
+  return {branch.unloading_coefficient, overlap - branch.plastic_overlap, branch.unloading_radius / c.equivalent_radius};
+}
+
 }  // namespace ellc
