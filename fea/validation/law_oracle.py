@@ -1,4 +1,4 @@
-"""TEST ORACLE ONLY -- the Becker-Kamlah law re-stated from model-notes.md, for the FE write-up.
+"""TEST ORACLE ONLY -- the Becker-Kamlah law re-stated from docs/model.md, for the FE write-up.
 
 The production implementation is the C++ library; this copy exists so the FE data can be
 checked before `ellc curve` is available, and to cross-check the library.  Aligned bodies only
@@ -37,7 +37,7 @@ def _ratio_for_k(k: float) -> float:
 
 
 def exact_shape(a_sum: float, b_sum: float) -> tuple[float, float, float]:
-    """(f1, f2, k) of the exact elliptic-integral Hertz solution (model-notes Sec. 1)."""
+    """(f1, f2, k) of the exact elliptic-integral Hertz solution (docs/model.md §1)."""
     target = b_sum / a_sum
     if target <= 1.0 + 1e-12:
         return 1.0, 1.0, 1.0

@@ -78,7 +78,7 @@ double thornton_restitution(double ratio) {  // ratio = v_y / v_impact ≤ 1
          std::pow(ratio / (ratio + 2.0 * std::sqrt(6.0 / 5.0 - ratio * ratio / 5.0)), 0.25);
 }
 
-// Head-on collision of two equal spheres with the law in its Thornton limit (λ ≡ 1.6, model-notes
+// Head-on collision of two equal spheres with the law in its Thornton limit (λ ≡ 1.6, docs/model.md
 // §4). v_y is the impact speed whose kinetic energy m* v_y²/2 equals the Hertz work up to δ_Y.
 // Tolerance 1.5 %: the time discretisation (about 30 steps per contact at dt = 0.05 estimate).
 TEST(EngineDynamics, RestitutionMatchesThornton1997) {

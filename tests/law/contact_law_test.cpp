@@ -22,7 +22,7 @@ std::vector<ContactConstants> all_cases() {
 
 TEST(Law, PaperCase2GeometryAsInModelNotes) {
   const auto c = paper_case2();
-  EXPECT_NEAR(c.equivalent_radius, 5.22, 0.01);  // model-notes §6
+  EXPECT_NEAR(c.equivalent_radius, 5.22, 0.01);  // docs/model.md §6
   EXPECT_NEAR(c.epsilon_max, 2.79, 0.01);
   EXPECT_NEAR(c.plastic_limit_overlap, c.epsilon_max * c.epsilon_max * c.yield_overlap, 1e-15);
 }
@@ -95,7 +95,7 @@ TEST(Law, UnloadingStartsAtTheHistoryPointAndEndsAtThePlasticOverlap) {
 }
 
 // Paper case 2's protocol (δ_* = 10 % and 13 % of r̂^{I,J} = 20 µm), against the notes
-// evaluated independently: a separate numpy script written from model-notes §1–4 (Hale factors,
+// evaluated independently: a separate numpy script written from docs/model.md §1–4 (Hale factors,
 // eq. 44, 34, 46 with denominator F_*,pY, 48, 49), not calling this library. Units µm, MPa, µN.
 // These are the δ_p that docs/validation.md compares with the FE (Sec. 2).
 TEST(Law, PaperCase2UnloadingMatchesAnIndependentEvaluationOfTheNotes) {

@@ -1,4 +1,4 @@
-// Material layer: effective modulus (eq. 3), yield-stress mixing (model-notes §5), validation.
+// Material layer: effective modulus (eq. 3), yield-stress mixing (docs/model.md §5), validation.
 #include <gtest/gtest.h>
 
 #include <cmath>

@@ -1,6 +1,6 @@
 #pragma once
 // Ellipsoid–plane (wall) contact. The wall is body J with zero curvatures, so the contact law
-// becomes Hertz between the ellipsoid and a flat (model-notes §1). Closed form: the deepest point
+// becomes Hertz between the ellipsoid and a flat (docs/model.md §1). Closed form: the deepest point
 // of the body is its support point along −normal; no iteration, no warm start.
 
 #include <Eigen/Core>

@@ -89,7 +89,7 @@ double log_expm1_small(double x, double log_x) noexcept {
 }
 
 HertzShape hale_shape(double equivalent_radius, double ratio) noexcept {
-  // Eq. (4) and (7) as corrected in model-notes §1, with B/A ≥ 1:
+  // Eq. (4) and (7) as corrected in docs/model.md §1, with B/A ≥ 1:
   //   e² = 1 − (A/B)^{4/3},  f1 = 1 − ((B/A)^0.0602 − 1)^1.456,  f2 = 1 − ((B/A)^0.0684 − 1)^1.531.
   // A DEM evaluates this per contact and step, so the transcendental calls are counted: every
   // power of B/A shares one logarithm L, expm1 keeps (B/A)^p − 1 exact near B/A = 1, and for

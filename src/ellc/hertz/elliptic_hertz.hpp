@@ -1,5 +1,5 @@
 #pragma once
-// Elliptical Hertz contact (paper Sec. 2, model-notes §1). Two pieces:
+// Elliptical Hertz contact (paper Sec. 2, docs/model.md §1). Two pieces:
 //  * HertzShape: everything fixed by the curvatures alone (R_e, e, f1, f2), computed once per
 //    contact configuration;
 //  * HertzContact: the overlap-dependent quantities (contact semi-axes, p0, force).
@@ -16,7 +16,7 @@ struct PrincipalCurvatures {
   double kappa_2 = 0.0;
 };
 
-// A and B of eq. (5), with B ≥ A (model-notes §1).
+// A and B of eq. (5), with B ≥ A (docs/model.md §1).
 struct RelativeCurvature {
   double a_sum = 0.0;  // A
   double b_sum = 0.0;  // B

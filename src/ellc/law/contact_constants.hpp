@@ -1,6 +1,6 @@
 #pragma once
 // Everything about one contact that does not depend on the overlap: the Hertz shape, the yield
-// point and the transition parameters (model-notes §2–3). Built once per contact configuration
+// point and the transition parameters (docs/model.md §2–3). Built once per contact configuration
 // (or per step in a DEM where the curvatures move); the law then needs only δ and δ_*.
 
 #include <string>

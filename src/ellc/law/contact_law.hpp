@@ -1,5 +1,5 @@
 #pragma once
-// The Becker–Kamlah normal contact law (paper Sec. 3, model-notes §2–4).
+// The Becker–Kamlah normal contact law (paper Sec. 3, docs/model.md §2–4).
 //
 // One pure function of the contact constants, the overlap δ and the history δ_* (the largest
 // overlap the contact has reached). Header-only and noexcept: no allocation, no exceptions,
@@ -35,7 +35,7 @@ struct LawResult {
   Regime regime = Regime::separated;
 };
 
-// Derived unloading branch for a history δ_* > δ_Y (model-notes §4).
+// Derived unloading branch for a history δ_* > δ_Y (docs/model.md §4).
 struct UnloadingBranch {
   double loading_force = 0.0;             // F_*,pmax: the loading force at δ_* (eq. 25 or 31)
   double fully_plastic_force = 0.0;       // F_*,pY = π p_Y (c_*² − c_Y²) + F_pY
@@ -108,7 +108,7 @@ struct LoadingPoint {
 }
 
 // The law. `max_overlap` is δ_* before this step (0 for a fresh contact). The caller stores the
-// returned max_overlap; deleting history on separation is the caller's policy (model-notes §5).
+// returned max_overlap; deleting history on separation is the caller's policy (docs/model.md §5).
 [[nodiscard]] inline LawResult evaluate_contact(const ContactConstants& c, double overlap,
                                                 double max_overlap) noexcept {
   if (!(overlap > 0.0)) return {0.0, max_overlap, Regime::separated};

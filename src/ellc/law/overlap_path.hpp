@@ -1,7 +1,7 @@
 #pragma once
 // The law along a prescribed overlap path, carrying δ_* from point to point. The history is
 // kept through δ ≤ 0 here: a path describes one contact spot whose dent persists, as in the
-// paper's load–unload–reload FE runs. (A DEM deletes history on separation; model-notes §5.)
+// paper's load–unload–reload FE runs. (A DEM deletes history on separation; docs/model.md §5.)
 
 #include <span>
 

@@ -27,7 +27,7 @@ struct LawParameters {
   double yield_pressure_factor = 1.6;  // p_Y = 1.6 Y at first yield (Sec. 3)
 
   // Thornton's elastic–fully-plastic variant: λ ≡ 1.6 (no transition hardening), the "thin line"
-  // of the paper's Fig. 6. model-notes §4: the law reduces to Thornton (1997) for spheres.
+  // of the paper's Fig. 6. docs/model.md §4: the law reduces to Thornton (1997) for spheres.
   [[nodiscard]] LawParameters elastic_fully_plastic() const noexcept;
 };
 

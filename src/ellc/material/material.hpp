@@ -16,7 +16,7 @@ struct Material {
 // What a contact needs from the two materials.
 struct ContactMaterial {
   double effective_modulus = 0.0;  // E_e, paper eq. (3)
-  double yield_stress = 0.0;       // Y of the contact: the softer body yields first (model-notes §5)
+  double yield_stress = 0.0;       // Y of the contact: the softer body yields first (docs/model.md §5)
 };
 
 // Empty when valid; otherwise a sentence naming the field, its value and what was expected.
@@ -33,7 +33,7 @@ struct ContactMaterial {
 // E_e = [ (1 − ν_I²)/E_I + (1 − ν_J²)/E_J ]⁻¹, paper eq. (3).
 [[nodiscard]] double effective_modulus(const Material& body_i, const Material& body_j) noexcept;
 
-// Y = min(Y_I, Y_J) (model-notes §5) together with E_e.
+// Y = min(Y_I, Y_J) (docs/model.md §5) together with E_e.
 [[nodiscard]] ContactMaterial mix(const Material& body_i, const Material& body_j) noexcept;
 
 }  // namespace ellc
