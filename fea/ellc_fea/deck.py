@@ -1,6 +1,6 @@
 """Write the CalculiX input deck for a meshed pair and a displacement protocol.
 
-Choices (see /work/shared/docs/fea-notes.md and docs/validation.md):
+Choices (see fea/README.md, "The model", and docs/validation.md):
   C3D10; bilinear elastic / ideally-plastic material with tangent modulus E/1000;
   frictionless surface-to-surface contact with a LINEAR pressure-overclosure law (slope
   1e7 MPa/um, the measured stand-in for HARD); symmetry on y = 0 and z = 0; each protocol
