@@ -54,10 +54,10 @@ struct ContactHistory {
   }
 
   // The flat form, for stores that keep raw doubles (LAMMPS's per-atom arrays, restart files).
-  void write_to(double* values) const noexcept { std::memcpy(values, this, sizeof(ContactHistory)); }
+  void write_to(double* values) const noexcept { std::memcpy(values, static_cast<const void*>(this), sizeof(ContactHistory)); }
   [[nodiscard]] static ContactHistory read_from(const double* values) noexcept {
     ContactHistory history;
-    std::memcpy(&history, values, sizeof(ContactHistory));
+    std::memcpy(static_cast<void*>(&history), values, sizeof(ContactHistory));
     return history;
   }
 };

@@ -459,6 +459,45 @@ double Simulation::spring_energy() const noexcept {
   return energy;
 }
 
+double contact_size_ratio(const ContactConstants& constants, double max_overlap, double mean_radius) noexcept {
+  return std::sqrt(constants.contact_radius_sq_per_overlap * std::max(max_overlap, 0.0)) / mean_radius;
+}
+
+ValidityReport Simulation::validity(double threshold) const noexcept {
+  ValidityReport report;
+  report.threshold = threshold;
+  const auto& p = particles_;
+  for (std::size_t index = 0; index < pairs_.size(); ++index) {
+    if (pair_reported_[index] == 0 || !pair_results_[index].contact) continue;
+    const PairSlot& pair = pairs_[index];
+    const double ratio = contact_size_ratio(pair.cache.constants, pair.history.max_overlap,
+                                            std::min(p.mean_radius[pair.i], p.mean_radius[pair.j]));
+    const double force = pair_results_[index].force_on_j.norm();
+    ++report.pair_contacts;
+    report.pair_force += force;
+    report.largest_ratio = std::max(report.largest_ratio, ratio);
+    if (ratio > threshold) {
+      ++report.pair_contacts_beyond;
+      report.pair_force_beyond += force;
+    }
+  }
+  for (int w = 0; w < 2; ++w)
+    for (std::size_t slot = 0; slot < wall_results_[w].size(); ++slot) {
+      if (wall_reported_[w][slot] == 0 || !wall_results_[w][slot].contact) continue;
+      const WallContact& wall = wall_history_[w][slot];
+      const double ratio = contact_size_ratio(wall.cache.constants, wall.history.max_overlap, p.mean_radius[slot]);
+      const double force = wall_results_[w][slot].force_on_wall.norm();
+      ++report.wall_contacts;
+      report.wall_force += force;
+      report.largest_ratio = std::max(report.largest_ratio, ratio);
+      if (ratio > threshold) {
+        ++report.wall_contacts_beyond;
+        report.wall_force_beyond += force;
+      }
+    }
+  return report;
+}
+
 ContactCounts Simulation::contact_counts() const noexcept {
   ContactCounts counts;
   for (std::size_t index = 0; index < pair_results_.size(); ++index) {

@@ -55,6 +55,28 @@ struct ContactCounts {
   std::uint64_t narrow_phase_failures = 0;            // since the start of the run
 };
 
+// How much of the current state rests on contacts beyond the law's range. The paper places the
+// finite-deformation regime, outside its theory, at c_c/r̂ = 0.16–0.4 (Sec. 2.2) with r̂ the mean
+// particle radius. Here c_c is the equivalent contact radius of eq. (9) at the contact's largest
+// overlap δ_*, and r̂ the mean radius of the smaller particle of the pair (the particle's own
+// against a wall): the stricter reading.
+struct ValidityReport {
+  double threshold = 0.16;
+  std::size_t pair_contacts = 0;
+  std::size_t pair_contacts_beyond = 0;
+  double pair_force = 0.0;  // Σ |F| over pair contacts
+  double pair_force_beyond = 0.0;
+  std::size_t wall_contacts = 0;
+  std::size_t wall_contacts_beyond = 0;
+  double wall_force = 0.0;  // Σ |F| over wall contacts
+  double wall_force_beyond = 0.0;
+  double largest_ratio = 0.0;  // max c_c/r̂ over all contacts
+};
+
+// c_c/r̂ of one contact as ValidityReport defines it.
+[[nodiscard]] double contact_size_ratio(const ContactConstants& constants, double max_overlap,
+                                        double mean_radius) noexcept;
+
 class Simulation {
  public:
   Simulation(const EngineSettings& settings, ParticleSet particles, const std::array<Wall, 2>& walls);
@@ -89,6 +111,7 @@ class Simulation {
   // Elastic energy stored in the contacts: what the law would give back on full unloading, pJ.
   [[nodiscard]] double contact_elastic_energy() const noexcept;  // ∫F_law dδ minus what the law gives back, pJ
   [[nodiscard]] ContactCounts contact_counts() const noexcept;
+  [[nodiscard]] ValidityReport validity(double threshold = 0.16) const noexcept;
   // Force the particles push a wall with, along the wall's outward direction, per box area (MPa).
   [[nodiscard]] double wall_pressure(int wall) const noexcept;
   [[nodiscard]] double gap() const noexcept { return walls_[kTopWall].position - walls_[kBottomWall].position; }
