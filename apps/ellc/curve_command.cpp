@@ -14,7 +14,7 @@
 #include "ellc/io/input_error.hpp"
 #include "ellc/cases/protocol.hpp"
 #include "ellc/law/contact_patch.hpp"
-#include "ellc/law/overlap_path.hpp"
+#include "ellc/law/law_along_path.hpp"
 #include "plot_runner.hpp"
 
 namespace ellc::cli {
@@ -42,7 +42,7 @@ void check(const ContactConstants& constants, const std::string& source, const c
 
 std::vector<LawResult> run(const ContactConstants& constants, const std::vector<double>& path) {
   std::vector<LawResult> results(path.size());
-  evaluate_path(constants, path, results);
+  evaluate_along_path(constants, path, results);
   return results;
 }
 
@@ -105,7 +105,7 @@ void run_curve(const CurveOptions& options) {
   check(constants, options.case_path, "the ellipsoid pair");
   check(sphere_constants, options.case_path, "the equal-volume spheres");
 
-  const std::vector<double> path = overlap_path(curve_case.waypoints, curve_case.points_per_segment);
+  const std::vector<double> path = protocol_overlaps(curve_case.waypoints, curve_case.points_per_segment);
   const auto results = run(constants, path);
   const auto spheres = run(sphere_constants, path);
   const auto elastic_fully_plastic = run(efp_constants, path);

@@ -42,8 +42,9 @@ void bind_cases(py::module_& module) {
       .def_readwrite("points_per_segment", &CurveCase::points_per_segment)
       .def_readwrite("model", &CurveCase::model)
       .def_readonly("warnings", &CurveCase::warnings)
+      // Python keeps the name overlap_path; in C++ it is protocol_overlaps (ellc/cases/protocol.hpp).
       .def("overlap_path", [](const CurveCase& curve_case) {
-        const std::vector<double> path = overlap_path(curve_case.waypoints, curve_case.points_per_segment);
+        const std::vector<double> path = protocol_overlaps(curve_case.waypoints, curve_case.points_per_segment);
         return py::array_t<double>(static_cast<py::ssize_t>(path.size()), path.data());
       }, "The protocol's overlap path, exactly as `ellc curve` samples it (numpy array).");
 
@@ -57,7 +58,7 @@ void bind_cases(py::module_& module) {
       "overlap_path",
       [](const std::vector<double>& waypoints, long points_per_segment) {
         if (points_per_segment < 1) throw py::value_error("points_per_segment: expected an integer >= 1");
-        const std::vector<double> path = overlap_path(waypoints, points_per_segment);
+        const std::vector<double> path = protocol_overlaps(waypoints, points_per_segment);
         return py::array_t<double>(static_cast<py::ssize_t>(path.size()), path.data());
       },
       py::arg("waypoints"), py::arg("points_per_segment"),

@@ -12,7 +12,7 @@
 #include "ellc/law/contact_constants.hpp"
 #include "ellc/law/contact_law.hpp"
 #include "ellc/law/contact_patch.hpp"
-#include "ellc/law/overlap_path.hpp"
+#include "ellc/law/law_along_path.hpp"
 #include "ellc/law/transition_fit.hpp"
 #include "numpy_support.hpp"
 
@@ -40,7 +40,7 @@ struct PatchArrays {
   py::array peak_pressure;
 };
 
-PathResult evaluate_path_arrays(const Contact& contact, const py::handle& overlaps_in, double initial_max_overlap) {
+PathResult evaluate_along_path_arrays(const Contact& contact, const py::handle& overlaps_in, double initial_max_overlap) {
   const DoubleArray overlaps = vector_argument(overlaps_in, "overlaps");
   const py::ssize_t size = overlaps.size();
   auto force = new_vector<double>(size);
@@ -54,7 +54,7 @@ PathResult evaluate_path_arrays(const Contact& contact, const py::handle& overla
   {
     py::gil_scoped_release release;
     std::vector<LawResult> results(static_cast<std::size_t>(size));
-    evaluate_path(contact.constants, view(overlaps), results, initial_max_overlap);
+    evaluate_along_path(contact.constants, view(overlaps), results, initial_max_overlap);
     for (std::size_t index = 0; index < results.size(); ++index) {
       force_out[index] = results[index].force;
       max_out[index] = results[index].max_overlap;
@@ -275,13 +275,14 @@ void bind_law(py::module_& module) {
       .def("__repr__", [](const Contact& contact) {
         return "Contact(" + std::string(py::repr(py::cast(contact.constants))) + ")";
       })
-      .def("evaluate_path", &evaluate_path_arrays, py::arg("overlaps"), py::arg("initial_max_overlap") = 0.0,
+      // Python keeps the name evaluate_path; in C++ it is evaluate_along_path (ellc/law/law_along_path.hpp).
+      .def("evaluate_path", &evaluate_along_path_arrays, py::arg("overlaps"), py::arg("initial_max_overlap") = 0.0,
            "The law along a 1-D array of overlaps, carrying delta_* from point to point (history kept through "
            "delta <= 0, as `ellc curve` does). Returns a PathResult; its max_overlap[-1] continues the path.")
       .def(
           "force",
           [](const Contact& contact, const py::handle& overlaps, double initial_max_overlap) {
-            return evaluate_path_arrays(contact, overlaps, initial_max_overlap).force;
+            return evaluate_along_path_arrays(contact, overlaps, initial_max_overlap).force;
           },
           py::arg("overlaps"), py::arg("initial_max_overlap") = 0.0, "evaluate_path(...).force.")
       .def(

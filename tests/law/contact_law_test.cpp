@@ -6,7 +6,7 @@
 #include <random>
 #include <vector>
 
-#include "ellc/law/overlap_path.hpp"
+#include "ellc/law/law_along_path.hpp"
 #include "law_fixtures.hpp"
 
 namespace {
@@ -141,7 +141,7 @@ TEST(Law, ReloadingRetracesUnloadingThenRejoinsTheEnvelope) {
   path.insert(path.end(), up.begin() + 1, up.end());      // reload to the same peak
   path.push_back(1.2 * peak);                             // and beyond: back on the envelope
   std::vector<LawResult> results(path.size());
-  evaluate_path(c, path, results);
+  evaluate_along_path(c, path, results);
   for (int i = 0; i <= 100; ++i) {
     const auto& unload = results[100 + i];   // δ = peak (1 − i/100)
     const auto& reload = results[300 - i];   // the same δ on the way back up

@@ -2,7 +2,7 @@
 
 namespace ellc {
 
-std::vector<double> overlap_path(const std::vector<double>& waypoints, long points_per_segment) {
+std::vector<double> protocol_overlaps(const std::vector<double>& waypoints, long points_per_segment) {
   std::vector<double> path;
   if (waypoints.empty()) return path;
   path.reserve(1 + (waypoints.size() - 1) * static_cast<std::size_t>(points_per_segment));

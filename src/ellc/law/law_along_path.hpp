@@ -10,8 +10,8 @@
 namespace ellc {
 
 // Writes one result per overlap into `results` (same size). Returns the final δ_*.
-inline double evaluate_path(const ContactConstants& constants, std::span<const double> overlaps,
-                            std::span<LawResult> results, double initial_max_overlap = 0.0) noexcept {
+inline double evaluate_along_path(const ContactConstants& constants, std::span<const double> overlaps,
+                                  std::span<LawResult> results, double initial_max_overlap = 0.0) noexcept {
   double max_overlap = initial_max_overlap;
   const std::size_t count = overlaps.size() < results.size() ? overlaps.size() : results.size();
   for (std::size_t index = 0; index < count; ++index) {

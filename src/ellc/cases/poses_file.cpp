@@ -1,0 +1,95 @@
+#include "ellc/cases/poses_file.hpp"
+
+#include <cmath>
+#include <numbers>
+
+#include <Eigen/Geometry>
+
+#include "ellc/io/input_error.hpp"
+#include "ellc/io/table_reader.hpp"
+
+namespace ellc {
+namespace {
+
+constexpr double kDegree = std::numbers::pi / 180.0;
+
+Eigen::Vector3d vector3(const std::vector<double>& values) { return {values[0], values[1], values[2]}; }
+
+Eigen::Vector3d unit_vector(TableReader& table, const char* key, const std::vector<double>& values) {
+  const Eigen::Vector3d vector = vector3(values);
+  const double length = vector.norm();
+  if (!(length > 0.0) || !std::isfinite(length))
+    table.fail(key, "[" + format_number(values[0]) + ", " + format_number(values[1]) + ", " + format_number(values[2]) + "]",
+               "a non-zero vector");
+  return vector / length;
+}
+
+// Reads the pose keys first (so read_body's finish() knows them), then the body itself.
+PosedBodySpec read_posed_body(TableReader& table, const std::optional<Material>& shared_material,
+                              std::vector<std::string>& warnings) {
+  PosedBodySpec body;
+  if (const auto position = table.optional_numbers("position", 3)) body.pose.position = vector3(*position);
+  const auto orientation = table.optional_numbers("orientation", 4);
+  const auto axis = table.optional_numbers("axis", 3);
+  const auto angle = table.optional_number("angle_deg");
+  if (orientation && (axis || angle))
+    throw InputError(table.source(), "[" + table.path() + "] gives both orientation and axis/angle_deg: expected one of the two");
+  Eigen::Quaterniond rotation = Eigen::Quaterniond::Identity();
+  if (orientation) {
+    const Eigen::Quaterniond q((*orientation)[0], (*orientation)[1], (*orientation)[2], (*orientation)[3]);
+    if (!(q.norm() > 1e-12))
+      table.fail("orientation", "a zero quaternion", "a unit quaternion [w, x, y, z] (it is normalised)");
+    rotation = q.normalized();
+  } else if (axis || angle) {
+    if (!axis) table.fail("axis", "missing", "axis = [x, y, z], required with angle_deg");
+    if (!angle) table.fail("angle_deg", "missing", "a number (degrees), required with axis");
+    rotation = Eigen::AngleAxisd(*angle * kDegree, unit_vector(table, "axis", *axis));
+  }
+  body.spec = read_body(table, shared_material, warnings);
+  body.pose.orientation = rotation * Eigen::Quaterniond(Eigen::AngleAxisd(body.spec.twist, Eigen::Vector3d::UnitX()));
+  return body;
+}
+
+WallSpec read_wall(TableReader& table) {
+  WallSpec wall;
+  const auto point = table.optional_numbers("point", 3);
+  if (!point) table.fail("point", "missing", "point = [x, y, z] on the wall");
+  const auto normal = table.optional_numbers("normal", 3);
+  if (!normal) table.fail("normal", "missing", "normal = [x, y, z], pointing to the particles' side");
+  wall.plane = {vector3(*point), unit_vector(table, "normal", *normal)};
+  if (auto material = table.optional_table("material")) wall.material = read_material(*material);
+  table.finish();
+  return wall;
+}
+
+PosesCase read_poses_table(const toml::table& root_table, const std::string& source) {
+  TableReader root(root_table, "", source);
+  PosesCase poses;
+  std::optional<Material> shared_material;
+  if (auto material = root.optional_table("material")) shared_material = read_material(*material);
+  {
+    auto body = root.table("body_I");
+    poses.body_i = read_posed_body(body, shared_material, poses.warnings);
+  }
+  auto body_j = root.optional_table("body_J");
+  auto wall = root.optional_table("wall");
+  if (body_j && wall) throw InputError(source, "the file gives both [body_J] and [wall]: expected one of the two");
+  if (!body_j && !wall) root.fail("body_J", "missing", "a table [body_J] or a table [wall]");
+  if (body_j) poses.body_j = read_posed_body(*body_j, shared_material, poses.warnings);
+  if (wall) poses.wall = read_wall(*wall);
+  if (auto model = root.optional_table("model")) poses.model = read_model(*model);
+  poses.max_overlap = root.number_or("max_overlap", 0.0);
+  if (poses.max_overlap < 0.0) root.fail("max_overlap", poses.max_overlap, "a finite number >= 0 (µm)");
+  root.finish();
+  return poses;
+}
+
+}  // namespace
+
+PosesCase read_poses(const std::string& path) { return read_poses_table(parse_toml_file(path), path); }
+
+PosesCase parse_poses(std::string_view toml_text, const std::string& source) {
+  return read_poses_table(parse_toml_text(toml_text, source), source);
+}
+
+}  // namespace ellc
