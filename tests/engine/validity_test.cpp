@@ -1,5 +1,5 @@
 // ValidityReport: contacts beyond c_c/r̂ = 0.16, where the paper's theory ends, are found and the
-// force they carry is summed.
+// force they carry is summed; the unbalanced-force ratio measures static equilibrium.
 
 #include <gtest/gtest.h>
 
@@ -40,6 +40,21 @@ TEST(EngineValidity, ContactsBeyondTheFiniteDeformationLimitAreCountedWithTheirF
   EXPECT_NEAR(report.pair_force_beyond / (report.pair_force - report.pair_force_beyond), std::pow(2.5, 3.0), 1e-6);
   EXPECT_EQ(report.wall_force_beyond, report.wall_force);
   EXPECT_EQ(sim.validity(0.3).pair_contacts_beyond, 0U);
+}
+
+// A sphere squeezed equally by floor and plate is in equilibrium (ratio 0); one pushed by the
+// floor alone is not (ratio 1: its net force is its only contact force).
+TEST(EngineEquilibrium, UnbalancedForceRatioIsNetOverContactForce) {
+  const double radius = 4.0;
+  const double overlap = 0.02;
+  ParticleSet particles;
+  particles.add(0, Eigen::Vector3d::Constant(radius), 1.0, {20.0, 20.0, radius - overlap},
+                Eigen::Quaterniond::Identity());
+  const EngineSettings settings = testing::free_settings(NormalModel::hertz);
+  const Simulation squeezed(settings, particles, {Wall{0.0, 0.0, 1, {}}, Wall{2 * (radius - overlap), 0.0, -1, {}}});
+  EXPECT_LT(squeezed.unbalanced_force_ratio(), 1e-12);
+  const Simulation pushed(settings, particles, {Wall{0.0, 0.0, 1, {}}, Wall{100.0, 0.0, -1, {}}});
+  EXPECT_NEAR(pushed.unbalanced_force_ratio(), 1.0, 1e-12);
 }
 
 }  // namespace

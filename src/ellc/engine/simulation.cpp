@@ -498,6 +498,28 @@ ValidityReport Simulation::validity(double threshold) const noexcept {
   return report;
 }
 
+double Simulation::unbalanced_force_ratio() const noexcept {
+  const auto& p = particles_;
+  if (p.size() == 0) return 0.0;
+  double net = 0.0;
+  for (std::size_t slot = 0; slot < p.size(); ++slot) net += p.force[slot].norm();  // contact forces only
+  double contact = 0.0;
+  std::size_t contacts = 0;
+  for (std::size_t index = 0; index < pair_results_.size(); ++index) {
+    if (pair_reported_[index] == 0 || !pair_results_[index].contact) continue;
+    contact += pair_results_[index].force_on_j.norm();
+    ++contacts;
+  }
+  for (int w = 0; w < 2; ++w)
+    for (std::size_t slot = 0; slot < wall_results_[w].size(); ++slot) {
+      if (wall_reported_[w][slot] == 0 || !wall_results_[w][slot].contact) continue;
+      contact += wall_results_[w][slot].force_on_wall.norm();
+      ++contacts;
+    }
+  if (!(contact > 0.0)) return 1.0;
+  return (net / static_cast<double>(p.size())) / (contact / static_cast<double>(contacts));
+}
+
 ContactCounts Simulation::contact_counts() const noexcept {
   ContactCounts counts;
   for (std::size_t index = 0; index < pair_results_.size(); ++index) {

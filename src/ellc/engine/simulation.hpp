@@ -112,6 +112,10 @@ class Simulation {
   [[nodiscard]] double contact_elastic_energy() const noexcept;  // ∫F_law dδ minus what the law gives back, pJ
   [[nodiscard]] ContactCounts contact_counts() const noexcept;
   [[nodiscard]] ValidityReport validity(double threshold = 0.16) const noexcept;
+  // Static equilibrium: the mean magnitude of the particles' net contact force over the mean
+  // magnitude of the contact forces (pair and wall contacts). 0 in exact equilibrium; the usual
+  // quasi-static criterion is < 10⁻³. 1 when there are no contact forces at all.
+  [[nodiscard]] double unbalanced_force_ratio() const noexcept;
   // Force the particles push a wall with, along the wall's outward direction, per box area (MPa).
   [[nodiscard]] double wall_pressure(int wall) const noexcept;
   [[nodiscard]] double gap() const noexcept { return walls_[kTopWall].position - walls_[kBottomWall].position; }
