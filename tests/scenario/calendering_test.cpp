@@ -3,7 +3,7 @@
 
 #include <gtest/gtest.h>
 
-#include "engine_support.hpp"
+#include "scenario_support.hpp"
 
 namespace ellc::engine {
 namespace {

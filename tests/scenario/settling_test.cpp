@@ -10,7 +10,7 @@
 #include <limits>
 #include <string>
 
-#include "engine_support.hpp"
+#include "scenario_support.hpp"
 
 namespace ellc::engine {
 namespace {

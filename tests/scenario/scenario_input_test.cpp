@@ -5,7 +5,7 @@
 #include <string>
 
 #include "ellc/io/input_error.hpp"
-#include "engine_support.hpp"
+#include "scenario_support.hpp"
 
 namespace ellc::engine {
 namespace {
