@@ -5,6 +5,11 @@
 
 namespace ellc::engine::testing {
 
+using scenario::ellipsoid_overlap_test;
+using scenario::generate_packing;
+using scenario::PackingSpec;
+using scenario::Random;
+
 EngineSettings free_settings(NormalModel model) {
   EngineSettings settings;
   settings.contact.material = kNmc;

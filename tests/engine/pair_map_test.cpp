@@ -14,6 +14,8 @@
 namespace ellc::engine {
 namespace {
 
+using scenario::Random;
+
 ParticleSet three_spheres(bool reversed) {
   ParticleSet particles;
   const Eigen::Vector3d a(1.0, 5.0, 5.0), b(19.5, 5.0, 5.0), c(10.0, 15.0, 5.0);  // a–b touch across x = 0

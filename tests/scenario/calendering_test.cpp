@@ -5,7 +5,7 @@
 
 #include "scenario_support.hpp"
 
-namespace ellc::engine {
+namespace ellc::scenario {
 namespace {
 
 using testing::in_memory;
@@ -47,4 +47,4 @@ TEST(EngineCalendering, SpringbackPositiveAndSmallerThanElastic) {
 }
 
 }  // namespace
-}  // namespace ellc::engine
+}  // namespace ellc::scenario

@@ -12,7 +12,7 @@
 #include "scenario_support.hpp"
 #include "support/simulation_state.hpp"
 
-namespace ellc::engine {
+namespace ellc::scenario {
 namespace {
 
 using ellc::test::state_bytes;
@@ -67,4 +67,4 @@ TEST(EngineDeterminism, RestartRefusesAnotherScenario) {
 }
 
 }  // namespace
-}  // namespace ellc::engine
+}  // namespace ellc::scenario

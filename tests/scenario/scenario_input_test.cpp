@@ -7,9 +7,10 @@
 #include "ellc/io/input_error.hpp"
 #include "scenario_support.hpp"
 
-namespace ellc::engine {
+namespace ellc::scenario {
 namespace {
 
+using engine::RunawayError;
 using testing::in_memory;
 using testing::quick_scenario;
 using testing::quick_scenario_text;
@@ -104,4 +105,4 @@ TEST(EngineScenarioInput, RunawayNamesParticleAndStep) {
 }
 
 }  // namespace
-}  // namespace ellc::engine
+}  // namespace ellc::scenario

@@ -4,7 +4,7 @@
 #include <sstream>
 #include <stdexcept>
 
-namespace ellc::engine::testing {
+namespace ellc::scenario::testing {
 
 std::string quick_scenario_text() {
   std::ifstream file(std::string(ELLC_EXAMPLES_DIR) + "/calendering_quick.toml");
@@ -30,4 +30,4 @@ RunOptions in_memory(std::size_t parallel_threshold) {
   return options;
 }
 
-}  // namespace ellc::engine::testing
+}  // namespace ellc::scenario::testing

@@ -6,7 +6,7 @@
 #include "ellc/scenario/scenario.hpp"
 #include "ellc/scenario/scenario_runner.hpp"
 
-namespace ellc::engine::testing {
+namespace ellc::scenario::testing {
 
 // Text of examples/calendering_quick.toml, optionally with one line replaced.
 [[nodiscard]] std::string quick_scenario_text();
@@ -16,4 +16,4 @@ namespace ellc::engine::testing {
 // Options for runs that write nothing to disk.
 [[nodiscard]] RunOptions in_memory(std::size_t parallel_threshold = 0);
 
-}  // namespace ellc::engine::testing
+}  // namespace ellc::scenario::testing

@@ -7,7 +7,13 @@
 #include "ellc/engine/binary_io.hpp"
 #include "ellc/io/input_error.hpp"
 
-namespace ellc::engine {
+namespace ellc::scenario {
+
+using engine::EngineSettings;
+using engine::ParticleSet;
+using engine::Simulation;
+using engine::Wall;
+namespace binary = engine::binary;
 
 namespace {
 
@@ -80,4 +86,4 @@ Checkpoint read_checkpoint(const std::string& path, const Scenario& scenario, En
   return checkpoint;
 }
 
-}  // namespace ellc::engine
+}  // namespace ellc::scenario

@@ -11,23 +11,23 @@
 #include "ellc/scenario/protocol_stages.hpp"
 #include "ellc/scenario/scenario.hpp"
 
-namespace ellc::engine {
+namespace ellc::scenario {
 
 // FNV-1a of the scenario text: a checkpoint only restarts the scenario it came from.
 [[nodiscard]] std::uint64_t scenario_hash(const std::string& text) noexcept;
 
 // Writes atomically (a temporary file, then a rename).
 void write_checkpoint(const std::string& path, const Scenario& scenario, const ProtocolState& protocol,
-                      double dt_estimate, const Simulation& simulation);
+                      double dt_estimate, const engine::Simulation& simulation);
 
 struct Checkpoint {
   ProtocolState protocol;
   double dt_estimate = 0.0;  // µs
-  std::unique_ptr<Simulation> simulation;
+  std::unique_ptr<engine::Simulation> simulation;
 };
 
 // Throws InputError for a file that cannot be read, is no checkpoint, or comes from another
 // scenario. `settings` supplies what the stored state does not hold (material, box, ...).
-[[nodiscard]] Checkpoint read_checkpoint(const std::string& path, const Scenario& scenario, EngineSettings settings);
+[[nodiscard]] Checkpoint read_checkpoint(const std::string& path, const Scenario& scenario, engine::EngineSettings settings);
 
-}  // namespace ellc::engine
+}  // namespace ellc::scenario

@@ -7,7 +7,14 @@
 
 #include "ellc/io/input_error.hpp"
 
-namespace ellc::engine {
+namespace ellc::scenario {
+
+using engine::EngineSettings;
+using engine::kBottomWall;
+using engine::kTopWall;
+using engine::ParticleSet;
+using engine::Simulation;
+using engine::Wall;
 
 namespace {
 
@@ -176,4 +183,4 @@ double LoadingProtocol::progress(const Simulation& sim) const noexcept {
   return std::clamp(elapsed / total, 0.0, 0.999);
 }
 
-}  // namespace ellc::engine
+}  // namespace ellc::scenario

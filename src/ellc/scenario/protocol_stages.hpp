@@ -16,7 +16,7 @@
 #include "ellc/engine/simulation.hpp"
 #include "ellc/scenario/scenario.hpp"
 
-namespace ellc::engine {
+namespace ellc::scenario {
 
 enum class Phase : std::uint8_t { settle, load, hold, unload, done };
 [[nodiscard]] const char* phase_name(Phase phase) noexcept;
@@ -47,31 +47,31 @@ class LoadingProtocol {
   // A fresh run, before the simulation exists: gravity and drag of the settling into `settings`;
   // returns the walls (floor at z = 0, plate 2 r̂ above the highest particle). The state starts
   // in `settle`.
-  [[nodiscard]] std::array<Wall, 2> start(EngineSettings& settings, const ParticleSet& particles);
+  [[nodiscard]] std::array<engine::Wall, 2> start(engine::EngineSettings& settings, const engine::ParticleSet& particles);
   // The first transition of a fresh run, before any step: `load` when there is no settling.
   [[nodiscard]] std::optional<Phase> initial_transition() const noexcept;
   // A restarted run: the state read from its checkpoint, and the simulation read with it.
-  void restore(const ProtocolState& state, const Simulation& sim);
+  void restore(const ProtocolState& state, const engine::Simulation& sim);
 
   // After each step: tracks the maximum pressure and the end of the approach, and returns the
   // phase to enter now, if any (the caller records its sample first, then calls enter()).
   // Throws std::runtime_error when the plate reaches the thickness of the solid while loading.
-  [[nodiscard]] std::optional<Phase> after_step(Simulation& sim);
+  [[nodiscard]] std::optional<Phase> after_step(engine::Simulation& sim);
   // Moves the plate and switches the forces for `phase`, recording what the summary reports.
-  void enter(Simulation& sim, Phase phase);
+  void enter(engine::Simulation& sim, Phase phase);
 
   [[nodiscard]] const ProtocolState& state() const noexcept { return state_; }
   [[nodiscard]] bool done() const noexcept { return state_.phase == Phase::done; }
-  [[nodiscard]] double progress(const Simulation& sim) const noexcept;  // rough fraction done
+  [[nodiscard]] double progress(const engine::Simulation& sim) const noexcept;  // rough fraction done
 
  private:
   SettleSpec settle_;
   CalenderingSpec calendering_;
-  Box box_;
+  engine::Box box_;
   double mean_radius_ = 0.0;   // packing's mean r̂, µm
   double solid_volume_ = 0.0;  // µm³: the load stops at the thickness of the solid
   double total_mass_ = 0.0;    // ng: settling ends on the rms speed sqrt(2 E_kin / M)
   ProtocolState state_;
 };
 
-}  // namespace ellc::engine
+}  // namespace ellc::scenario

@@ -8,7 +8,12 @@
 
 #include "ellc/scenario/vtk_writer.hpp"
 
-namespace ellc::engine {
+namespace ellc::scenario {
+
+using engine::ContactCounts;
+using engine::kBottomWall;
+using engine::kTopWall;
+using engine::Simulation;
 
 namespace {
 
@@ -146,4 +151,4 @@ void write_summary_file(const std::string& path, const std::string& scenario_sou
       << "\nnarrow_phase_failures = " << s.narrow_phase_failures << "\n";
 }
 
-}  // namespace ellc::engine
+}  // namespace ellc::scenario

@@ -12,7 +12,7 @@
 #include "ellc/scenario/protocol_stages.hpp"
 #include "ellc/scenario/scenario.hpp"
 
-namespace ellc::engine {
+namespace ellc::scenario {
 
 class RunOutputs {
  public:
@@ -22,12 +22,12 @@ class RunOutputs {
   // Creates the directory. A fresh run starts a new time series (header, the first row, frame 0)
   // and removes the frames an earlier run left there; a restart keeps the rows up to its step
   // and appends to them.
-  void open(const Simulation& sim, Phase phase, bool restarted);
+  void open(const engine::Simulation& sim, Phase phase, bool restarted);
   // One row of the time series, labelled with `phase`.
-  void record_sample(const Simulation& sim, Phase phase);
+  void record_sample(const engine::Simulation& sim, Phase phase);
   // After a step: the row and the frame when their cadence says so, and the last frame once the
   // protocol is `done`. Returns true when a checkpoint is due (its cadence, or the end).
-  [[nodiscard]] bool after_step(const Simulation& sim, Phase phase, bool done);
+  [[nodiscard]] bool after_step(const engine::Simulation& sim, Phase phase, bool done);
   void flush();
 
   [[nodiscard]] bool enabled() const noexcept { return enabled_; }
@@ -60,8 +60,8 @@ struct RunSummary {
   bool finished = false;
 };
 
-[[nodiscard]] RunSummary summarize(const Simulation& sim, const ProtocolState& protocol, double dt_estimate);
+[[nodiscard]] RunSummary summarize(const engine::Simulation& sim, const ProtocolState& protocol, double dt_estimate);
 // summary.txt: `key = value` lines under a comment naming the scenario file.
 void write_summary_file(const std::string& path, const std::string& scenario_source, const RunSummary& summary);
 
-}  // namespace ellc::engine
+}  // namespace ellc::scenario

@@ -5,7 +5,14 @@
 #include "ellc/scenario/checkpoint.hpp"
 #include "ellc/scenario/packing.hpp"
 
-namespace ellc::engine {
+namespace ellc::scenario {
+
+using engine::EngineSettings;
+using engine::ParticleSet;
+using engine::RunawayError;
+using engine::Simulation;
+using engine::stable_time_step;
+using engine::Wall;
 
 namespace {
 
@@ -94,7 +101,7 @@ void ScenarioRunner::advance(std::uint64_t max_steps) {
 }
 
 void ScenarioRunner::write_checkpoint(const std::string& path) const {
-  engine::write_checkpoint(path, scenario_, protocol_.state(), dt_estimate_, *simulation_);
+  scenario::write_checkpoint(path, scenario_, protocol_.state(), dt_estimate_, *simulation_);
 }
 
 RunSummary ScenarioRunner::summary() const { return summarize(*simulation_, protocol_.state(), dt_estimate_); }
@@ -107,4 +114,4 @@ std::string ScenarioRunner::write_summary() const {
 
 double ScenarioRunner::progress() const noexcept { return protocol_.progress(*simulation_); }
 
-}  // namespace ellc::engine
+}  // namespace ellc::scenario

@@ -14,14 +14,14 @@
 #include "ellc/scenario/run_outputs.hpp"
 #include "ellc/scenario/scenario.hpp"
 
-namespace ellc::engine {
+namespace ellc::scenario {
 
 struct RunOptions {
   std::string output_directory;  // overrides [output].directory when not empty
   std::string restart_path;      // checkpoint to continue from (empty: fresh run)
   bool force = false;            // accept a time step above the stability estimate
   bool write_files = true;       // CSV, VTK, checkpoints, summary (tests may switch off)
-  std::size_t parallel_threshold = EngineSettings{}.parallel_threshold;
+  std::size_t parallel_threshold = engine::EngineSettings{}.parallel_threshold;
 };
 
 class ScenarioRunner {
@@ -38,7 +38,7 @@ class ScenarioRunner {
   void advance(std::uint64_t max_steps);
   [[nodiscard]] bool done() const noexcept { return protocol_.done(); }
 
-  [[nodiscard]] const Simulation& simulation() const noexcept { return *simulation_; }
+  [[nodiscard]] const engine::Simulation& simulation() const noexcept { return *simulation_; }
   [[nodiscard]] const ProtocolState& state() const noexcept { return protocol_.state(); }
   [[nodiscard]] const Scenario& scenario() const noexcept { return scenario_; }
   [[nodiscard]] RunSummary summary() const;
@@ -52,17 +52,17 @@ class ScenarioRunner {
   std::string write_summary() const;
 
  private:
-  void build_packing(EngineSettings settings);
-  void restore(EngineSettings settings);
+  void build_packing(engine::EngineSettings settings);
+  void restore(engine::EngineSettings settings);
   void enter(Phase phase);
 
   Scenario scenario_;
   RunOptions options_;
   LoadingProtocol protocol_;
   RunOutputs outputs_;
-  std::unique_ptr<Simulation> simulation_;
+  std::unique_ptr<engine::Simulation> simulation_;
   double dt_estimate_ = 0.0;
   std::vector<std::string> warnings_;
 };
 
-}  // namespace ellc::engine
+}  // namespace ellc::scenario
