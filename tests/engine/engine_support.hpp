@@ -4,10 +4,11 @@
 #include <cstdint>
 
 #include "ellc/engine/simulation.hpp"
+#include "support/nmc.hpp"
 
 namespace ellc::engine::testing {
 
-inline const Material kNmc{142000.0, 0.25, 7900.0};
+using ellc::test::kNmc;
 inline constexpr double kScaledDensity = 4.7e-3 * 1000.0;  // ng/µm³
 
 // Settings for a few free bodies: no damping, no friction, no gravity, far walls.
