@@ -6,7 +6,7 @@
 #include <fstream>
 
 #include "ellc/calibration/calibration_case.hpp"
-#include "ellc/io/input_error.hpp"
+#include "support/input_error.hpp"
 #include "support/nmc.hpp"
 
 namespace ellc {
@@ -37,13 +37,8 @@ class CalibrationInput : public ::testing::Test {
     std::ofstream(path) << text;
     return path.string();
   }
-  std::string message_of(const std::string& argument) {
-    try {
-      (void)read_calibration_case(argument);
-    } catch (const InputError& error) {
-      return error.what();
-    }
-    return "(no error)";
+  static std::string message_of(const std::string& argument) {
+    return test::input_error_message([&] { (void)read_calibration_case(argument); });
   }
   fs::path folder_;
 };
