@@ -50,7 +50,7 @@ std::string clock_text(double seconds) {
 class Progress {
  public:
   explicit Progress(bool quiet) : quiet_(quiet), tty_(isatty(fileno(stderr)) != 0), start_(clock::now()) {}
-  void update(const engine::ScenarioRunner& runner) {
+  void update(const scenario::ScenarioRunner& runner) {
     if (quiet_) return;
     const double fraction = runner.progress();
     const double elapsed = std::chrono::duration<double>(clock::now() - start_).count();
@@ -60,13 +60,13 @@ class Progress {
       constexpr int width = 30;
       const int filled = static_cast<int>(fraction * width);
       std::fprintf(stderr, "\r[%-*.*s] %5.1f%%  %-6s step %llu  p = %8.3g MPa  ETA %s   ", width, filled,
-                   "##############################", 100.0 * fraction, engine::phase_name(runner.state().phase),
+                   "##############################", 100.0 * fraction, scenario::phase_name(runner.state().phase),
                    static_cast<unsigned long long>(sim.step_count()), sim.wall_pressure(engine::kTopWall),
                    clock_text(eta).c_str());
       std::fflush(stderr);
     } else if (fraction >= next_report_ || runner.done()) {
       std::fprintf(stderr, "ellc dem: %3.0f%%  %-6s step %llu  t = %.4g us  gap = %.4g um  p = %.4g MPa  elapsed %s  ETA %s\n",
-                   100.0 * fraction, engine::phase_name(runner.state().phase),
+                   100.0 * fraction, scenario::phase_name(runner.state().phase),
                    static_cast<unsigned long long>(sim.step_count()), sim.time(), sim.gap(),
                    sim.wall_pressure(engine::kTopWall), clock_text(elapsed).c_str(), clock_text(eta).c_str());
       while (next_report_ <= fraction) next_report_ += 0.1;
@@ -85,7 +85,7 @@ class Progress {
   double next_report_ = 0.0;
 };
 
-void print_summary(const engine::RunSummary& s, const std::string& directory, double seconds) {
+void print_summary(const scenario::RunSummary& s, const std::string& directory, double seconds) {
   std::printf("ellc dem: %s after %llu steps (%.4g us simulated, dt = %.4g us, estimate %.4g us), %zu particles, %.1f s\n",
               s.finished ? "finished" : "stopped", static_cast<unsigned long long>(s.steps), s.time, s.dt,
               s.dt_estimate, s.particles, seconds);
@@ -132,13 +132,13 @@ void run_dem(const DemOptions& options) {
 #ifdef _OPENMP
   if (options.threads > 0) omp_set_num_threads(options.threads);
 #endif
-  engine::Scenario scenario = engine::read_scenario(options.scenario_path);
-  engine::RunOptions run_options;
+  scenario::Scenario loaded = scenario::read_scenario(options.scenario_path);
+  scenario::RunOptions run_options;
   run_options.output_directory = options.output_directory;
   run_options.restart_path = options.restart_path;
   run_options.force = options.force;
   Progress progress(options.quiet);
-  engine::ScenarioRunner runner(std::move(scenario), run_options);
+  scenario::ScenarioRunner runner(std::move(loaded), run_options);
   for (const auto& warning : runner.warnings()) std::fprintf(stderr, "ellc: warning: %s\n", warning.c_str());
 
   const std::uint64_t chunk = 100;

@@ -11,7 +11,7 @@
 #include "ellc/scenario/packing.hpp"
 #include "ellc/engine/settings.hpp"
 
-namespace ellc::engine {
+namespace ellc::scenario {
 
 struct SettleSpec {
   double gravity = 0.5;    // µm/µs², along −z
@@ -49,9 +49,9 @@ struct OutputSpec {
 struct Scenario {
   std::string source;             // file name, for messages
   std::string text;               // the file's text (its hash goes into checkpoints)
-  ContactSettings contact;
+  engine::ContactSettings contact;
   PackingSpec packing;
-  Box box;
+  engine::Box box;
   double mass_scaling = 1.0;      // density multiplier (quasi-static speed-up), docs/engine.md
   double material_density = 4.7e-3;  // ng/µm³ before scaling
   std::optional<double> dt;       // µs; default safety × Rayleigh estimate
@@ -71,4 +71,4 @@ struct Scenario {
 // The largest bounding radius and the smallest semi-axis the packing spec can produce.
 [[nodiscard]] double largest_bounding_radius(const PackingSpec& spec) noexcept;
 
-}  // namespace ellc::engine
+}  // namespace ellc::scenario

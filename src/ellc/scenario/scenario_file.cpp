@@ -12,7 +12,9 @@
 #include "ellc/io/input_error.hpp"
 #include "ellc/io/table_reader.hpp"
 
-namespace ellc::engine {
+namespace ellc::scenario {
+
+using engine::ContactSettings;
 
 double largest_bounding_radius(const PackingSpec& spec) noexcept {
   const double radius = spec.mean_radius * (1.0 + 2.0 * spec.radius_spread);
@@ -213,4 +215,4 @@ Scenario parse_scenario(std::string_view toml_text, const std::string& source) {
   return read(parse_toml_text(toml_text, source), source, std::string(toml_text));
 }
 
-}  // namespace ellc::engine
+}  // namespace ellc::scenario

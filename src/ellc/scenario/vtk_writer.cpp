@@ -3,7 +3,10 @@
 #include <fstream>
 #include <stdexcept>
 
-namespace ellc::engine {
+namespace ellc::scenario {
+
+using engine::ParticleSet;
+using engine::Simulation;
 
 void write_vtk_frame(const std::string& path, const Simulation& simulation) {
   std::ofstream out(path);
@@ -34,4 +37,4 @@ void write_vtk_frame(const std::string& path, const Simulation& simulation) {
   if (!out) throw std::runtime_error("writing " + path + " failed");
 }
 
-}  // namespace ellc::engine
+}  // namespace ellc::scenario

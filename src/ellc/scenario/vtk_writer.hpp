@@ -7,8 +7,8 @@
 
 #include "ellc/engine/simulation.hpp"
 
-namespace ellc::engine {
+namespace ellc::scenario {
 
-void write_vtk_frame(const std::string& path, const Simulation& simulation);
+void write_vtk_frame(const std::string& path, const engine::Simulation& simulation);
 
-}  // namespace ellc::engine
+}  // namespace ellc::scenario

@@ -1,0 +1,154 @@
+#include "ellc/scenario/run_outputs.hpp"
+
+#include <algorithm>
+#include <cstdio>
+#include <filesystem>
+#include <stdexcept>
+#include <vector>
+
+#include "ellc/scenario/vtk_writer.hpp"
+
+namespace ellc::scenario {
+
+using engine::ContactCounts;
+using engine::kBottomWall;
+using engine::kTopWall;
+using engine::Simulation;
+
+namespace {
+
+std::string frame_path(const std::string& directory, std::uint64_t step) {
+  char name[64];
+  std::snprintf(name, sizeof name, "particles_%09llu.vtk", static_cast<unsigned long long>(step));
+  return (std::filesystem::path(directory) / "vtk" / name).string();
+}
+
+std::string csv_header() {
+  return "step,time,phase,plate_position,thickness,plate_pressure,bottom_pressure,porosity,coordination_number,"
+         "contacts,wall_contacts,contacts_elastic,contacts_elastic_plastic,contacts_fully_plastic,"
+         "contacts_unloading,contacts_no_force,kinetic_energy,plastic_dissipation";
+}
+
+// Keeps the header and the rows up to `step` (a restart continues the series from there).
+void truncate_csv(const std::string& path, std::uint64_t step) {
+  std::ifstream in(path);
+  if (!in) return;
+  std::vector<std::string> kept;
+  std::string line;
+  while (std::getline(in, line)) {
+    if (kept.empty()) {
+      kept.push_back(line);
+      continue;
+    }
+    const auto comma = line.find(',');
+    if (comma == std::string::npos) continue;
+    if (std::stoull(line.substr(0, comma)) <= step) kept.push_back(line);
+  }
+  in.close();
+  std::ofstream out(path, std::ios::trunc);
+  for (const auto& row : kept) out << row << '\n';
+}
+
+bool due(std::uint64_t step, long every) { return every > 0 && step % static_cast<std::uint64_t>(every) == 0; }
+
+}  // namespace
+
+RunOutputs::RunOutputs(std::string directory, const OutputSpec& spec, bool enabled)
+    : directory_(std::move(directory)), spec_(spec), enabled_(enabled) {}
+
+std::string RunOutputs::file(const std::string& name) const {
+  return (std::filesystem::path(directory_) / name).string();
+}
+
+void RunOutputs::open(const Simulation& sim, Phase phase, bool restarted) {
+  if (!enabled_) return;
+  std::filesystem::create_directories(std::filesystem::path(directory_) / "vtk");
+  const std::string csv_path = file("timeseries.csv");
+  if (restarted) {
+    truncate_csv(csv_path, sim.step_count());
+    csv_.open(csv_path, std::ios::app);
+  } else {
+    // A fresh run replaces the frames of an earlier run in the same directory (ours only).
+    for (const auto& entry : std::filesystem::directory_iterator(std::filesystem::path(directory_) / "vtk")) {
+      const std::string name = entry.path().filename().string();
+      if (name.rfind("particles_", 0) == 0 && entry.path().extension() == ".vtk") std::filesystem::remove(entry.path());
+    }
+    csv_.open(csv_path, std::ios::trunc);
+    csv_ << csv_header() << '\n';
+  }
+  if (!csv_) throw std::runtime_error("cannot open " + csv_path + " for writing");
+  csv_.precision(10);
+  if (!restarted) {
+    record_sample(sim, phase);
+    write_vtk_frame(frame_path(directory_, 0), sim);
+  }
+}
+
+void RunOutputs::record_sample(const Simulation& sim, Phase phase) {
+  if (!enabled_ || !csv_.is_open()) return;
+  const ContactCounts counts = sim.contact_counts();
+  const double count = static_cast<double>(std::max<std::size_t>(sim.particles().size(), 1));
+  const auto regime = [&](Regime r) { return counts.by_regime[static_cast<std::size_t>(r)]; };
+  csv_ << sim.step_count() << ',' << sim.time() << ',' << phase_name(phase) << ','
+       << sim.walls()[kTopWall].position << ',' << sim.gap() << ',' << sim.wall_pressure(kTopWall) << ','
+       << sim.wall_pressure(kBottomWall) << ',' << sim.porosity() << ','
+       << 2.0 * static_cast<double>(counts.particle_contacts) / count << ',' << counts.particle_contacts << ','
+       << counts.wall_contacts << ',' << regime(Regime::elastic) << ',' << regime(Regime::elastic_plastic) << ','
+       << regime(Regime::fully_plastic) << ',' << regime(Regime::unloading) << ',' << regime(Regime::separated)
+       << ',' << sim.kinetic_energy() << ',' << sim.plastic_dissipation() << '\n';
+}
+
+bool RunOutputs::after_step(const Simulation& sim, Phase phase, bool done) {
+  if (!enabled_) return false;
+  const std::uint64_t step = sim.step_count();
+  if (step % static_cast<std::uint64_t>(spec_.csv_every) == 0) record_sample(sim, phase);
+  if (due(step, spec_.vtk_every)) write_vtk_frame(frame_path(directory_, step), sim);
+  if (done) {
+    csv_.flush();
+    if (!due(step, spec_.vtk_every)) write_vtk_frame(frame_path(directory_, step), sim);
+  }
+  return done || due(step, spec_.checkpoint_every);
+}
+
+void RunOutputs::flush() {
+  if (csv_.is_open()) csv_.flush();
+}
+
+RunSummary summarize(const Simulation& sim, const ProtocolState& protocol, double dt_estimate) {
+  const bool done = protocol.phase == Phase::done;
+  RunSummary summary;
+  summary.particles = sim.particles().size();
+  summary.steps = sim.step_count();
+  summary.time = sim.time();
+  summary.dt = sim.settings().dt;
+  summary.dt_estimate = dt_estimate;
+  summary.max_pressure = protocol.max_pressure;
+  summary.loaded_thickness = protocol.min_gap;
+  summary.final_thickness = protocol.final_gap;
+  summary.springback_percent =
+      protocol.min_gap > 0.0 && done ? 100.0 * (protocol.final_gap - protocol.min_gap) / protocol.min_gap : 0.0;
+  summary.loaded_porosity = protocol.loaded_porosity;
+  summary.final_porosity = protocol.final_porosity;
+  summary.plastic_dissipation = sim.plastic_dissipation();
+  summary.plastic_dissipation_calendering =
+      protocol.phase == Phase::settle ? 0.0 : summary.plastic_dissipation - protocol.plastic_at_load_start;
+  summary.narrow_phase_failures = sim.contact_counts().narrow_phase_failures;
+  summary.finished = done;
+  return summary;
+}
+
+void write_summary_file(const std::string& path, const std::string& scenario_source, const RunSummary& s) {
+  std::ofstream out(path);
+  out.precision(8);
+  out << "# ellc dem summary: " << scenario_source << "\n"
+      << "finished = " << (s.finished ? "true" : "false") << "\n"
+      << "particles = " << s.particles << "\nsteps = " << s.steps << "\ntime_us = " << s.time
+      << "\ndt_us = " << s.dt << "\ndt_estimate_us = " << s.dt_estimate << "\nmax_pressure_MPa = " << s.max_pressure
+      << "\nloaded_thickness_um = " << s.loaded_thickness << "\nfinal_thickness_um = " << s.final_thickness
+      << "\nspringback_percent = " << s.springback_percent << "\nloaded_porosity = " << s.loaded_porosity
+      << "\nfinal_porosity = " << s.final_porosity << "\nplastic_dissipation_pJ = " << s.plastic_dissipation
+      << "\nplastic_dissipation_calendering_pJ = " << s.plastic_dissipation_calendering
+      << "\nnarrow_phase_failures = " << s.narrow_phase_failures << "\n";
+}
+
+}  // namespace ellc::scenario

@@ -1,0 +1,67 @@
+#pragma once
+// What a scenario run writes into its output directory, apart from checkpoints (checkpoint.hpp):
+// the time series timeseries.csv (one row every csv_every steps and at each phase change), the
+// VTK frames vtk/particles_<step>.vtk (the first, every vtk_every steps, the last) and
+// summary.txt. The PNG plot of the time series is drawn by the CLI (apps/ellc/dem_command.cpp).
+
+#include <cstdint>
+#include <fstream>
+#include <string>
+
+#include "ellc/engine/simulation.hpp"
+#include "ellc/scenario/protocol_stages.hpp"
+#include "ellc/scenario/scenario.hpp"
+
+namespace ellc::scenario {
+
+class RunOutputs {
+ public:
+  // Disabled (`enabled` false), it writes nothing at all: runs in memory (tests).
+  RunOutputs(std::string directory, const OutputSpec& spec, bool enabled);
+
+  // Creates the directory. A fresh run starts a new time series (header, the first row, frame 0)
+  // and removes the frames an earlier run left there; a restart keeps the rows up to its step
+  // and appends to them.
+  void open(const engine::Simulation& sim, Phase phase, bool restarted);
+  // One row of the time series, labelled with `phase`.
+  void record_sample(const engine::Simulation& sim, Phase phase);
+  // After a step: the row and the frame when their cadence says so, and the last frame once the
+  // protocol is `done`. Returns true when a checkpoint is due (its cadence, or the end).
+  [[nodiscard]] bool after_step(const engine::Simulation& sim, Phase phase, bool done);
+  void flush();
+
+  [[nodiscard]] bool enabled() const noexcept { return enabled_; }
+  [[nodiscard]] const std::string& directory() const noexcept { return directory_; }
+  // `name` inside the output directory.
+  [[nodiscard]] std::string file(const std::string& name) const;
+
+ private:
+  std::string directory_;
+  OutputSpec spec_;
+  bool enabled_;
+  std::ofstream csv_;
+};
+
+struct RunSummary {
+  std::size_t particles = 0;
+  std::uint64_t steps = 0;
+  double time = 0.0;               // µs
+  double dt = 0.0;                 // µs
+  double dt_estimate = 0.0;        // µs
+  double max_pressure = 0.0;       // MPa
+  double loaded_thickness = 0.0;   // µm, plate gap at the end of the hold
+  double final_thickness = 0.0;    // µm, plate gap when contact was lost
+  double springback_percent = 0.0; // 100 (final − loaded) / loaded
+  double loaded_porosity = 0.0;
+  double final_porosity = 0.0;
+  double plastic_dissipation = 0.0;  // pJ, whole run
+  double plastic_dissipation_calendering = 0.0;  // pJ, from the start of the load
+  std::uint64_t narrow_phase_failures = 0;
+  bool finished = false;
+};
+
+[[nodiscard]] RunSummary summarize(const engine::Simulation& sim, const ProtocolState& protocol, double dt_estimate);
+// summary.txt: `key = value` lines under a comment naming the scenario file.
+void write_summary_file(const std::string& path, const std::string& scenario_source, const RunSummary& summary);
+
+}  // namespace ellc::scenario
