@@ -228,7 +228,7 @@ TEST(OneContactModel, AdapterGivesExactlyTheSharedPairForces) {
     shared = ellc::pair_forces(solution, a.position, {a.velocity, a.angular_velocity, a.mass}, b.position,
                                {b.velocity, b.angular_velocity, b.mass}, context, 1e-3, history);
   }
-  EXPECT_EQ(through_adapter.force_on_b, shared.force_on_j);
+  EXPECT_EQ(through_adapter.force_on_b, shared.contact.on_j);
   EXPECT_EQ(through_adapter.torque_on_a, shared.torque_on_i);
   EXPECT_EQ(through_adapter.torque_on_b, shared.torque_on_j);
   double flat[ellc::ContactHistory::kDoubles];

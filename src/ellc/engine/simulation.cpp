@@ -267,11 +267,11 @@ void Simulation::evaluate_walls_and_reset(std::size_t slot) {
     }
     const WallForces on_wall =
         wall_forces(solution, p.position[slot], motion, wall.velocity, wall_context_, settings_.dt, history);
-    force -= on_wall.force_on_wall;
+    force -= on_wall.contact.on_j;
     torque -= on_wall.lever_cross_force;
-    result.force_on_wall = on_wall.force_on_wall;
-    result.damping_dissipation = on_wall.damping_dissipation;
-    result.friction_dissipation = on_wall.friction_dissipation;
+    result.force_on_wall = on_wall.contact.on_j;
+    result.damping_dissipation = on_wall.contact.damping_dissipation;
+    result.friction_dissipation = on_wall.contact.friction_dissipation;
     result.regime = solution.law.regime;
     result.contact = true;
   }
@@ -334,11 +334,11 @@ void Simulation::evaluate_pair(std::size_t index) {
   const PairForces forces =
       pair_forces(solution, p.position[i], BodyMotion{p.velocity[i], omega_world_[i], p.mass[i]}, centre_j,
                   BodyMotion{p.velocity[j], omega_world_[j], p.mass[j]}, pair_context_, settings_.dt, history);
-  result.force_on_j = forces.force_on_j;
+  result.force_on_j = forces.contact.on_j;
   result.torque_i = forces.torque_on_i;
   result.torque_j = forces.torque_on_j;
-  result.damping_dissipation = forces.damping_dissipation;
-  result.friction_dissipation = forces.friction_dissipation;
+  result.damping_dissipation = forces.contact.damping_dissipation;
+  result.friction_dissipation = forces.contact.friction_dissipation;
 }
 
 // Where contributions meet. Each particle adds its pair forces to its wall forces in pair-list

@@ -128,25 +128,22 @@ class Simulation {
   void read_state(std::istream& in);
 
  private:
-  struct PairResult {
-    Eigen::Vector3d force_on_j = Eigen::Vector3d::Zero();
-    Eigen::Vector3d torque_i = Eigen::Vector3d::Zero();
-    Eigen::Vector3d torque_j = Eigen::Vector3d::Zero();
-    double released_work = 0.0;
+  // What one contact evaluation reports to the sums of the step, pair or wall alike.
+  struct ContactTally {
+    double released_work = 0.0;  // plastic work of a contact that ended
     double damping_dissipation = 0.0;
     double friction_dissipation = 0.0;
     Regime regime = Regime::separated;
     bool contact = false;
     bool failed = false;
   };
-  struct WallResult {
+  struct PairResult : ContactTally {
+    Eigen::Vector3d force_on_j = Eigen::Vector3d::Zero();
+    Eigen::Vector3d torque_i = Eigen::Vector3d::Zero();
+    Eigen::Vector3d torque_j = Eigen::Vector3d::Zero();
+  };
+  struct WallResult : ContactTally {
     Eigen::Vector3d force_on_wall = Eigen::Vector3d::Zero();
-    double released_work = 0.0;
-    double damping_dissipation = 0.0;
-    double friction_dissipation = 0.0;
-    Regime regime = Regime::separated;
-    bool contact = false;
-    bool failed = false;
   };
   // A result slot is only written when this step has something to say (a contact, released
   // plastic work, a failure); a byte per slot (1 = written this step) says which slots are
