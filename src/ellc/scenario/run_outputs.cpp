@@ -134,6 +134,12 @@ RunSummary summarize(const Simulation& sim, const ProtocolState& protocol, doubl
       protocol.phase == Phase::settle ? 0.0 : summary.plastic_dissipation - protocol.plastic_at_load_start;
   summary.narrow_phase_failures = sim.contact_counts().narrow_phase_failures;
   summary.finished = done;
+  summary.held_pressure = protocol.loaded.pressure;
+  summary.loaded_time = protocol.loaded.time;
+  summary.loaded_unbalanced_force_ratio = protocol.loaded.unbalanced_force_ratio;
+  summary.loaded_plate_speed = protocol.loaded.plate_speed;
+  summary.released_time = protocol.released.time;
+  summary.released_unbalanced_force_ratio = protocol.released.unbalanced_force_ratio;
   return summary;
 }
 
@@ -148,7 +154,10 @@ void write_summary_file(const std::string& path, const std::string& scenario_sou
       << "\nspringback_percent = " << s.springback_percent << "\nloaded_porosity = " << s.loaded_porosity
       << "\nfinal_porosity = " << s.final_porosity << "\nplastic_dissipation_pJ = " << s.plastic_dissipation
       << "\nplastic_dissipation_calendering_pJ = " << s.plastic_dissipation_calendering
-      << "\nnarrow_phase_failures = " << s.narrow_phase_failures << "\n";
+      << "\nnarrow_phase_failures = " << s.narrow_phase_failures << "\nheld_pressure_MPa = " << s.held_pressure
+      << "\nloaded_time_us = " << s.loaded_time << "\nloaded_unbalanced_force_ratio = " << s.loaded_unbalanced_force_ratio
+      << "\nloaded_plate_speed_um_per_us = " << s.loaded_plate_speed << "\nreleased_time_us = " << s.released_time
+      << "\nreleased_unbalanced_force_ratio = " << s.released_unbalanced_force_ratio << "\n";
 }
 
 }  // namespace ellc::scenario

@@ -58,6 +58,13 @@ struct RunSummary {
   double plastic_dissipation_calendering = 0.0;  // pJ, from the start of the load
   std::uint64_t narrow_phase_failures = 0;
   bool finished = false;
+  // Where the loaded and released states were read (ProtocolState::Reading).
+  double held_pressure = 0.0;                 // MPa, top plate at the loaded reading
+  double loaded_time = 0.0;                   // µs
+  double loaded_unbalanced_force_ratio = 0.0;
+  double loaded_plate_speed = 0.0;            // µm/µs
+  double released_time = 0.0;                 // µs
+  double released_unbalanced_force_ratio = 0.0;
 };
 
 [[nodiscard]] RunSummary summarize(const engine::Simulation& sim, const ProtocolState& protocol, double dt_estimate);

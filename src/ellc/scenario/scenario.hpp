@@ -37,6 +37,29 @@ struct CalenderingSpec {
   // below this fraction of the maximum (particles set flying by the release, with no gravity to
   // bring them back, would otherwise keep touching the rising plate now and then).
   double release_fraction = 1e-3;
+
+  // Quasi-static protocol (docs/engine.md, "Loading protocol").
+  // Every change of the plate's velocity is a half-cosine ramp over ramp_time (0: a step).
+  double ramp_time = 0.0;  // µs
+  // The approach ends when the top pressure averaged over approach_window (an exponential average
+  // with that time constant; 0: the instantaneous pressure) reaches approach_pressure, or, when
+  // given, when the solid fraction between the plates reaches approach_solid_fraction.
+  double approach_window = 0.0;  // µs
+  std::optional<double> approach_solid_fraction;
+  // Hold: the plate stays where it is (`fixed`) or a servo holds target_pressure (`servo`), with
+  // the plate speed −speed · clamp(servo_gain (p_target − p)/p_target, −1, 1).
+  bool servo_hold = false;
+  double servo_gain = 5.0;
+  // Readings at equilibrium: the hold (and the relaxation after the release) last at least their
+  // time, then until the unbalanced-force ratio is below equilibrium_ratio; a run that has not got
+  // there by max_hold_time (max_relax_time) stops with an error naming the criterion.
+  double equilibrium_ratio = 1e-3;
+  double max_hold_time = 0.0;   // µs, 0 → 5 × hold_time
+  double relax_time = 0.0;      // µs after the plate lost contact; 0: the released state is read at once
+  // Background damping −γ m v during the hold and the relaxation only (1/µs): it removes the
+  // kinetic energy a static reading must not have, without touching the loading (0: none).
+  double rest_drag_rate = 0.0;
+  double max_relax_time = 0.0;  // µs, 0 → 5 × relax_time
 };
 
 struct OutputSpec {

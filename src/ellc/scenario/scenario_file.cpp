@@ -131,6 +131,26 @@ void read_calendering(TableReader& table, CalenderingSpec& spec) {
   spec.start_gap = non_negative_or(table, "start_gap", spec.start_gap);
   spec.release_fraction = non_negative_or(table, "release_fraction", spec.release_fraction);
   if (spec.release_fraction >= 1.0) table.fail("release_fraction", spec.release_fraction, "a fraction in [0, 1)");
+  spec.ramp_time = non_negative_or(table, "ramp_time", spec.ramp_time);
+  spec.approach_window = non_negative_or(table, "approach_window", spec.approach_window);
+  if (table.has("approach_solid_fraction")) {
+    spec.approach_solid_fraction = table.positive("approach_solid_fraction");
+    if (*spec.approach_solid_fraction >= 1.0)
+      table.fail("approach_solid_fraction", *spec.approach_solid_fraction, "a solid fraction in (0, 1)");
+  }
+  spec.servo_hold = table.choice("hold", {"fixed", "servo"}, "fixed") == "servo";
+  if (spec.servo_hold && !spec.target_pressure)
+    table.fail("hold", "\"servo\"", "\"fixed\", or a target_pressure for the servo to hold");
+  spec.servo_gain = positive_or(table, "servo_gain", spec.servo_gain);
+  spec.equilibrium_ratio = positive_or(table, "equilibrium_ratio", spec.equilibrium_ratio);
+  spec.max_hold_time = non_negative_or(table, "max_hold_time", spec.max_hold_time);
+  if (spec.max_hold_time > 0.0 && spec.max_hold_time < spec.hold_time)
+    table.fail("max_hold_time", spec.max_hold_time, "a time >= hold_time = " + format_number(spec.hold_time) + " µs");
+  spec.relax_time = non_negative_or(table, "relax_time", spec.relax_time);
+  spec.rest_drag_rate = non_negative_or(table, "rest_drag_rate", spec.rest_drag_rate);
+  spec.max_relax_time = non_negative_or(table, "max_relax_time", spec.max_relax_time);
+  if (spec.max_relax_time > 0.0 && spec.max_relax_time < spec.relax_time)
+    table.fail("max_relax_time", spec.max_relax_time, "a time >= relax_time = " + format_number(spec.relax_time) + " µs");
   table.finish();
 }
 

@@ -93,7 +93,20 @@ void ScenarioRunner::advance(std::uint64_t max_steps) {
       }
       throw;
     }
-    if (const auto next = protocol_.after_step(*simulation_)) enter(*next);
+    std::optional<Phase> next;
+    try {
+      next = protocol_.after_step(*simulation_);
+    } catch (const ProtocolError& error) {
+      outputs_.record_sample(*simulation_, protocol_.state().phase);
+      outputs_.flush();
+      if (outputs_.enabled()) {
+        const std::string path = outputs_.file("checkpoint_failure.bin");
+        write_checkpoint(path);
+        throw ProtocolError(std::string(error.what()) + "; outputs kept, state written to " + path);
+      }
+      throw;
+    }
+    if (next) enter(*next);
     if (outputs_.after_step(*simulation_, protocol_.state().phase, done()))
       write_checkpoint(outputs_.file("checkpoint.bin"));
   }
