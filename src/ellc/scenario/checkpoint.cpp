@@ -17,7 +17,7 @@ namespace binary = engine::binary;
 
 namespace {
 
-constexpr std::uint64_t kCheckpointTag = 0x454c4c43'434b5031ULL;  // "ELLCCKP1"
+constexpr std::uint64_t kCheckpointTag = 0x454c4c43'434b5032ULL;  // "ELLCCKP2": ramps and readings (was 1)
 
 // The protocol state field by field (no padding bytes in the file: equal runs, equal files).
 template <typename Io, typename State>
@@ -37,6 +37,19 @@ void protocol_fields(Io&& io, State& state) {
   io(state.loaded_porosity);
   io(state.done_step);
   io(state.plastic_at_load_start);
+  io(state.ramp_start);
+  io(state.ramp_from);
+  io(state.ramp_to);
+  io(state.approach_average);
+  io(state.hold_start_time);
+  io(state.relax_start_time);
+  for (auto* reading : {&state.loaded, &state.released}) {
+    io(reading->time);
+    io(reading->unbalanced_force_ratio);
+    io(reading->plate_speed);
+    io(reading->gap);
+    io(reading->pressure);
+  }
 }
 
 }  // namespace
