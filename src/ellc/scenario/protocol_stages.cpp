@@ -202,7 +202,8 @@ std::optional<Phase> LoadingProtocol::after_step(Simulation& sim) {
     case Phase::hold: {
       if (spec.servo_hold && spec.target_pressure) {
         const double error = (*spec.target_pressure - pressure) / *spec.target_pressure;
-        sim.set_wall_velocity(kTopWall, -spec.speed * std::clamp(spec.servo_gain * error, -1.0, 1.0));
+        const double speed = std::abs(error) <= spec.servo_tolerance ? 0.0 : std::clamp(spec.servo_gain * error, -1.0, 1.0);
+        sim.set_wall_velocity(kTopWall, -spec.speed * speed);
       }
       if (sim.time() < state_.phase_end_time) break;
       const double ratio = sim.unbalanced_force_ratio();

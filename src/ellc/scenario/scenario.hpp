@@ -48,8 +48,10 @@ struct CalenderingSpec {
   std::optional<double> approach_solid_fraction;
   // Hold: the plate stays where it is (`fixed`) or a servo holds target_pressure (`servo`), with
   // the plate speed −speed · clamp(servo_gain (p_target − p)/p_target, −1, 1).
+  // Within servo_tolerance of the target the plate stands still, so the layer can come to rest.
   bool servo_hold = false;
   double servo_gain = 5.0;
+  double servo_tolerance = 0.01;
   // Readings at equilibrium: the hold (and the relaxation after the release) last at least their
   // time, then until the unbalanced-force ratio is below equilibrium_ratio; a run that has not got
   // there by max_hold_time (max_relax_time) stops with an error naming the criterion.

@@ -139,9 +139,9 @@ void read_calendering(TableReader& table, CalenderingSpec& spec) {
       table.fail("approach_solid_fraction", *spec.approach_solid_fraction, "a solid fraction in (0, 1)");
   }
   spec.servo_hold = table.choice("hold", {"fixed", "servo"}, "fixed") == "servo";
-  if (spec.servo_hold && !spec.target_pressure)
-    table.fail("hold", "\"servo\"", "\"fixed\", or a target_pressure for the servo to hold");
   spec.servo_gain = positive_or(table, "servo_gain", spec.servo_gain);
+  spec.servo_tolerance = non_negative_or(table, "servo_tolerance", spec.servo_tolerance);
+  if (spec.servo_tolerance >= 0.5) table.fail("servo_tolerance", spec.servo_tolerance, "a relative pressure error in [0, 0.5)");
   spec.equilibrium_ratio = positive_or(table, "equilibrium_ratio", spec.equilibrium_ratio);
   spec.max_hold_time = non_negative_or(table, "max_hold_time", spec.max_hold_time);
   if (spec.max_hold_time > 0.0 && spec.max_hold_time < spec.hold_time)
@@ -183,6 +183,9 @@ void cross_check(const Scenario& scenario) {
                        "a plate gap > " + format_number(solid) +
                            " µm, the thickness of the solid alone (the walls would overlap the particles)");
   }
+  if (scenario.calendering.servo_hold && !scenario.calendering.target_pressure)
+    throw InputError(scenario.source, "calendering.hold", "\"servo\"",
+                     "\"fixed\", or a target_pressure for the servo to hold");
 }
 
 Scenario read(const toml::table& root_table, const std::string& source, std::string text) {
