@@ -357,7 +357,7 @@ RunSummary ScenarioRunner::summary() const {
 
 std::string ScenarioRunner::write_summary() const {
   const RunSummary s = summary();
-  const std::string path = (std::filesystem::path(directory_) / "summary.txt").string();
+  std::string path = (std::filesystem::path(directory_) / "summary.txt").string();
   std::ofstream out(path);
   out.precision(8);
   out << "# ellc dem summary: " << scenario_.source << "\n"
