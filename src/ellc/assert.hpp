@@ -27,7 +27,7 @@
 namespace ellc::assert_detail {
 
 [[noreturn, gnu::cold, gnu::noinline]] inline void fail(const char* file, int line, const char* condition,
-                                                         const char* message) noexcept {
+                                                        const char* message) noexcept {
   std::fprintf(stderr, "%s:%d: ELLC_ASSERT(%s) failed: %s\n", file, line, condition, message);
   std::fflush(stderr);
   std::abort();
@@ -36,8 +36,8 @@ namespace ellc::assert_detail {
 }  // namespace ellc::assert_detail
 
 #if ELLC_ASSERTS_ENABLED
-#define ELLC_ASSERT(condition, message)                      \
-  (static_cast<bool>(condition) ? static_cast<void>(0)       \
+#define ELLC_ASSERT(condition, message)                \
+  (static_cast<bool>(condition) ? static_cast<void>(0) \
                                 : ::ellc::assert_detail::fail(__FILE__, __LINE__, #condition, message))
 #else
 #define ELLC_ASSERT(condition, message) static_cast<void>(sizeof(static_cast<bool>(condition)))
