@@ -4,8 +4,10 @@
 #include <cmath>
 #include <limits>
 
+#include "ellc/assert.hpp"
 #include "ellc/contact/contact_energy.hpp"
 #include "ellc/engine/broad_phase.hpp"
+#include "ellc/engine/invariants.hpp"
 #include "ellc/engine/rigid_body.hpp"
 
 namespace ellc::engine {
@@ -102,6 +104,8 @@ void Simulation::index_pairs_by_particle() {
     pairs_of_particle_[fill[pairs_[index].i]++] = entry;
     pairs_of_particle_[fill[pairs_[index].j]++] = entry + 1;
   }
+  ELLC_ASSERT(invariants::valid_pair_index(pairs_, count, pairs_of_particle_start_, pairs_of_particle_),
+              "per-particle pair index inconsistent with the pair list");
 }
 
 std::size_t Simulation::pairs_proven_apart() const noexcept {

@@ -172,7 +172,7 @@ class Simulation {
   void evaluate_pair(std::size_t index);
   void evaluate_walls_and_reset(std::size_t slot);
   void accumulate();
-  [[noreturn]] void report_runaway(std::size_t slot) const;
+  [[noreturn]] void report_runaway(std::size_t first_bad) const;
 
   EngineSettings settings_;
   ParticleSet particles_;

@@ -11,8 +11,8 @@ namespace ellc {
 namespace {
 std::string describe_node(const toml::node& node) {
   std::ostringstream out;
-  if (node.is_string())
-    out << '"' << *node.value<std::string>() << '"';
+  if (const auto* text = node.as_string())
+    out << '"' << text->get() << '"';
   else if (node.is_table())
     out << "a table";
   else if (node.is_array())

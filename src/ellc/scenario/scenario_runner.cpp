@@ -120,7 +120,7 @@ void ScenarioRunner::write_checkpoint(const std::string& path) const {
 RunSummary ScenarioRunner::summary() const { return summarize(*simulation_, protocol_.state(), dt_estimate_); }
 
 std::string ScenarioRunner::write_summary() const {
-  const std::string path = outputs_.file("summary.txt");
+  std::string path = outputs_.file("summary.txt");  // not const: the return moves it
   write_summary_file(path, scenario_.source, summary());
   return path;
 }
