@@ -2,7 +2,9 @@
 
 Subcommands: ``curve`` (``ellc curve -o`` CSV), ``fit PREFIX`` (tables of ``ellc fit --plot PREFIX``:
 Fig. 11 and 12), ``pressure CASE.toml OUT.png`` (pressure along a_c, b_c and contact ellipses of a
-case file, Fig. 4/9/14; needs the compiled module). The drawing functions live in ellc.figures.
+case file, Fig. 4/9/14; needs the compiled module), ``dem CSV OUT.png`` (``ellc dem``
+timeseries.csv) and ``dem-ensemble OUT.png CSV...`` (the members of ``ellc dem --seeds N``, drawn
+by ``plot_pressure_thickness_ensemble``). The drawing functions live in ellc.figures.
 """
 
 import argparse
@@ -149,6 +151,79 @@ def dem_command(args):
     return 0
 
 
+def plot_pressure_thickness_ensemble(members, axes=None, title=None):
+    """The pressure-thickness curves of an ensemble over packing seeds (``ellc dem --seeds N``)
+    on one axes, one colour per member: load and hold solid, unload dashed.
+
+    ``members``: a list of ``(label, columns)``, where ``columns`` maps ``"thickness"`` and
+    ``"plate_pressure"`` (and optionally ``"phase"``) to equal-length sequences or arrays, as
+    ``read_columns`` gives them for a member's timeseries.csv. Without ``"phase"`` every row is
+    drawn as one solid line. Returns the axes.
+    """
+    import numpy as np
+
+    if axes is None:
+        _, axes = plt.subplots(figsize=(7.5, 5.0), dpi=110)
+    colours = plt.get_cmap("viridis" if len(members) > 10 else "tab10")
+    peak = 0.0
+    for _, columns in members:
+        pressure = np.asarray(columns["plate_pressure"], dtype=float)
+        if pressure.size:
+            peak = max(peak, float(np.nanmax(pressure)))
+    pressed = []
+    for index, (label, columns) in enumerate(members):
+        colour = colours(index / max(len(members) - 1, 1)) if len(members) > 10 else colours(index % 10)
+        thickness = np.asarray(columns["thickness"], dtype=float)
+        pressure = np.asarray(columns["plate_pressure"], dtype=float)
+        phases = np.asarray(columns["phase"], dtype=str) if "phase" in columns else None
+        if phases is None:
+            axes.plot(thickness, pressure, "-", lw=1.0, color=colour, label=label)
+        else:
+            loading = (phases == "load") | (phases == "hold")
+            unloading = phases == "unload"
+            axes.plot(thickness[loading], pressure[loading], "-", lw=1.0, color=colour, label=label)
+            axes.plot(thickness[unloading], pressure[unloading], "--", lw=1.0, color=colour)
+        pressed.extend(thickness[pressure > 0.05 * peak])
+    # Zoom on the calendering proper: where the plate pressure exceeds 5 % of the ensemble's
+    # largest (1 %, as for one run, would keep the few-MPa ripples of the loose deposit's
+    # compaction, which reach 1 % in some member or other).
+    if pressed:
+        low, high = min(pressed), max(pressed)
+        margin = 0.15 * (high - low) + 1e-9
+        axes.set_xlim(low - margin, high + margin)
+    axes.set_xlabel("layer thickness (plate gap) [um]")
+    axes.set_ylabel("plate pressure [MPa]")
+    axes.set_ylim(bottom=0)
+    axes.grid(alpha=0.3)
+    if members:
+        if len(members) <= 10:
+            axes.legend(loc="upper right", fontsize=8, title="load solid, unload dashed", title_fontsize=8)
+        else:
+            axes.text(0.98, 0.97, f"{len(members)} packing seeds; load solid, unload dashed",
+                      transform=axes.transAxes, ha="right", va="top", fontsize=8)
+    if title:
+        axes.set_title(title, fontsize=9)
+    return axes
+
+
+def dem_ensemble_command(args):
+    """The members' pressure-thickness curves of `ellc dem --seeds N` in one plot; a member is
+    labelled by the folder of its CSV (seed_<seed>) unless --labels is given."""
+    import pathlib
+
+    labels = args.labels.split(",") if args.labels else [pathlib.Path(path).parent.name for path in args.csv]
+    if len(labels) != len(args.csv):
+        raise SystemExit(f"--labels has {len(labels)} names for {len(args.csv)} CSV files")
+    members = [(label, read_columns(path)) for label, path in zip(labels, args.csv)]
+    figure, axes = plt.subplots(figsize=(7.5, 5.0), dpi=110)
+    title = f"{args.title}: {len(members)} packing seeds" if args.title else f"{len(members)} packing seeds"
+    plot_pressure_thickness_ensemble(members, axes, title)
+    figure.tight_layout()
+    figure.savefig(args.png)
+    plt.close(figure)
+    return 0
+
+
 def main(argv=None):
     parser = argparse.ArgumentParser(prog="python3 -m ellc.plots")
     sub = parser.add_subparsers(dest="command", required=True)
@@ -170,6 +245,12 @@ def main(argv=None):
     dem.add_argument("png")
     dem.add_argument("--title")
     dem.set_defaults(run=dem_command)
+    ensemble = sub.add_parser("dem-ensemble", help="pressure against thickness of the members of `ellc dem --seeds N`")
+    ensemble.add_argument("png")
+    ensemble.add_argument("csv", nargs="+", help="the members' timeseries.csv")
+    ensemble.add_argument("--labels", help="comma-separated member names (default: each CSV's folder)")
+    ensemble.add_argument("--title")
+    ensemble.set_defaults(run=dem_ensemble_command)
     args = parser.parse_args(argv)
     return args.run(args)
 

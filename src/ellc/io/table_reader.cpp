@@ -118,6 +118,29 @@ std::optional<std::vector<double>> TableReader::optional_numbers(std::string_vie
   return values;
 }
 
+std::optional<std::vector<long>> TableReader::optional_integers(std::string_view key, long minimum) {
+  const toml::node* node = find(key);
+  if (node == nullptr) return std::nullopt;
+  const std::string expected = "an integer >= " + std::to_string(minimum);
+  const toml::array* array = node->as_array();
+  if (array == nullptr) fail(key, describe_node(*node), "an array of integers >= " + std::to_string(minimum));
+  std::vector<long> values;
+  values.reserve(array->size());
+  for (std::size_t index = 0; index < array->size(); ++index) {
+    const toml::node& element = *array->get(index);
+    const std::string element_field = field(key) + "[" + std::to_string(index) + "]";
+    const auto value = element.value_exact<int64_t>();
+    if (!value) {
+      std::string seen = describe_node(element);
+      if (element.is_floating_point() && seen.find_first_of(".eni") == std::string::npos) seen += ".0";  // 3.0, not 3
+      throw InputError(source_, element_field, seen, expected);
+    }
+    if (*value < minimum) throw InputError(source_, element_field, std::to_string(*value), expected);
+    values.push_back(static_cast<long>(*value));
+  }
+  return values;
+}
+
 std::vector<double> TableReader::numbers(std::string_view key, std::size_t required_size) {
   auto values = optional_numbers(key, required_size);
   if (!values) fail(key, "missing", required_size ? "an array of " + std::to_string(required_size) + " numbers"

@@ -145,6 +145,10 @@ RunSummary summarize(const Simulation& sim, const ProtocolState& protocol, doubl
 
 void write_summary_file(const std::string& path, const std::string& scenario_source, const RunSummary& s) {
   std::ofstream out(path);
+  write_summary_lines(out, scenario_source, s);
+}
+
+void write_summary_lines(std::ostream& out, const std::string& scenario_source, const RunSummary& s) {
   out.precision(8);
   out << "# ellc dem summary: " << scenario_source << "\n"
       << "finished = " << (s.finished ? "true" : "false") << "\n"

@@ -70,5 +70,7 @@ struct RunSummary {
 [[nodiscard]] RunSummary summarize(const engine::Simulation& sim, const ProtocolState& protocol, double dt_estimate);
 // summary.txt: `key = value` lines under a comment naming the scenario file.
 void write_summary_file(const std::string& path, const std::string& scenario_source, const RunSummary& summary);
+// The same lines to a stream (the ensemble reads its members' figures from them, ensemble.hpp).
+void write_summary_lines(std::ostream& out, const std::string& scenario_source, const RunSummary& summary);
 
 }  // namespace ellc::scenario

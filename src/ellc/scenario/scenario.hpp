@@ -76,6 +76,7 @@ struct Scenario {
   std::string text;               // the file's text (its hash goes into checkpoints)
   engine::ContactSettings contact;
   PackingSpec packing;
+  std::vector<std::uint64_t> seeds;  // [packing] seeds: one run per seed (ensemble.hpp); empty: one run
   engine::Box box;
   double mass_scaling = 1.0;      // density multiplier (quasi-static speed-up), docs/engine.md
   double material_density = 4.7e-3;  // ng/µm³ before scaling

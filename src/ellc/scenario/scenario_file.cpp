@@ -8,6 +8,7 @@
 
 #include "ellc/cases/case_file.hpp"
 #include "ellc/contact/contact_parameters.hpp"
+#include "ellc/scenario/ensemble.hpp"
 #include "ellc/scenario/scenario.hpp"
 #include "ellc/io/input_error.hpp"
 #include "ellc/io/table_reader.hpp"
@@ -78,6 +79,7 @@ void read_packing(TableReader& table, Scenario& scenario) {
     scenario.warnings.push_back("packing.aspect extends outside the calibrated range 1:[0.5..2]:[0.5..2] of the "
                                 "transition fits (eq. 52-53); the law still evaluates");
   spec.seed = static_cast<std::uint64_t>(table.integer_at_least("seed", 0, 1));
+  scenario.seeds = read_packing_seeds(table);  // an ensemble over packing seeds (ensemble.hpp)
   scenario.material_density = table.positive("density");
   spec.insertion_fraction = positive_or(table, "insertion_fraction", spec.insertion_fraction);
   if (spec.insertion_fraction > 0.5) table.fail("insertion_fraction", spec.insertion_fraction, "a solid fraction in (0, 0.5]");
