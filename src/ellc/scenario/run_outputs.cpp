@@ -26,7 +26,9 @@ std::string frame_path(const std::string& directory, std::uint64_t step) {
 std::string csv_header() {
   return "step,time,phase,plate_position,thickness,plate_pressure,bottom_pressure,porosity,coordination_number,"
          "contacts,wall_contacts,contacts_elastic,contacts_elastic_plastic,contacts_fully_plastic,"
-         "contacts_unloading,contacts_no_force,kinetic_energy,plastic_dissipation";
+         "contacts_unloading,contacts_no_force,kinetic_energy,plastic_dissipation,"
+         "inertial_number,unbalanced_force_ratio,kinetic_over_elastic,work_bottom_plate,work_top_plate,gravity_work,"
+         "elastic_energy,spring_energy,friction_dissipation,damping_dissipation,drag_dissipation,energy_residual";
 }
 
 // Keeps the header and the rows up to `step` (a restart continues the series from there).
@@ -53,14 +55,14 @@ bool due(std::uint64_t step, long every) { return every > 0 && step % static_cas
 
 }  // namespace
 
-RunOutputs::RunOutputs(std::string directory, const OutputSpec& spec, bool enabled)
-    : directory_(std::move(directory)), spec_(spec), enabled_(enabled) {}
+RunOutputs::RunOutputs(std::string directory, const OutputSpec& spec, bool enabled, const DiagnosticScales& scales)
+    : directory_(std::move(directory)), spec_(spec), enabled_(enabled), scales_(scales) {}
 
 std::string RunOutputs::file(const std::string& name) const {
   return (std::filesystem::path(directory_) / name).string();
 }
 
-void RunOutputs::open(const Simulation& sim, Phase phase, bool restarted) {
+void RunOutputs::open(const Simulation& sim, Phase phase, bool restarted, const EnergyLedger& ledger) {
   if (!enabled_) return;
   std::filesystem::create_directories(std::filesystem::path(directory_) / "vtk");
   const std::string csv_path = file("timeseries.csv");
@@ -79,12 +81,12 @@ void RunOutputs::open(const Simulation& sim, Phase phase, bool restarted) {
   if (!csv_) throw std::runtime_error("cannot open " + csv_path + " for writing");
   csv_.precision(10);
   if (!restarted) {
-    record_sample(sim, phase);
+    record_sample(sim, phase, ledger);
     write_vtk_frame(frame_path(directory_, 0), sim);
   }
 }
 
-void RunOutputs::record_sample(const Simulation& sim, Phase phase) {
+void RunOutputs::record_sample(const Simulation& sim, Phase phase, const EnergyLedger& ledger) {
   if (!enabled_ || !csv_.is_open()) return;
   const ContactCounts counts = sim.contact_counts();
   const double count = static_cast<double>(std::max<std::size_t>(sim.particles().size(), 1));
@@ -95,13 +97,19 @@ void RunOutputs::record_sample(const Simulation& sim, Phase phase) {
        << 2.0 * static_cast<double>(counts.particle_contacts) / count << ',' << counts.particle_contacts << ','
        << counts.wall_contacts << ',' << regime(Regime::elastic) << ',' << regime(Regime::elastic_plastic) << ','
        << regime(Regime::fully_plastic) << ',' << regime(Regime::unloading) << ',' << regime(Regime::separated)
-       << ',' << sim.kinetic_energy() << ',' << sim.plastic_dissipation() << '\n';
+       << ',' << sim.kinetic_energy() << ',' << sim.plastic_dissipation();
+  const Diagnostics d = diagnose(sim, scales_, ledger);
+  const EnergyBalance& e = d.energy;
+  csv_ << ',' << d.inertial_number << ',' << d.unbalanced_force_ratio << ',' << d.kinetic_over_elastic << ','
+       << e.work_bottom_plate << ',' << e.work_top_plate << ',' << e.gravity_work << ',' << e.now.elastic << ','
+       << e.now.spring << ',' << e.now.friction << ',' << e.now.damping << ',' << e.drag_dissipation << ','
+       << e.residual << '\n';
 }
 
-bool RunOutputs::after_step(const Simulation& sim, Phase phase, bool done) {
+bool RunOutputs::after_step(const Simulation& sim, Phase phase, bool done, const EnergyLedger& ledger) {
   if (!enabled_) return false;
   const std::uint64_t step = sim.step_count();
-  if (step % static_cast<std::uint64_t>(spec_.csv_every) == 0) record_sample(sim, phase);
+  if (step % static_cast<std::uint64_t>(spec_.csv_every) == 0) record_sample(sim, phase, ledger);
   if (due(step, spec_.vtk_every)) write_vtk_frame(frame_path(directory_, step), sim);
   if (done) {
     csv_.flush();
@@ -114,7 +122,8 @@ void RunOutputs::flush() {
   if (csv_.is_open()) csv_.flush();
 }
 
-RunSummary summarize(const Simulation& sim, const ProtocolState& protocol, double dt_estimate) {
+RunSummary summarize(const Simulation& sim, const ProtocolState& protocol, double dt_estimate,
+                     const EnergyLedger& ledger) {
   const bool done = protocol.phase == Phase::done;
   RunSummary summary;
   summary.particles = sim.particles().size();
@@ -134,6 +143,11 @@ RunSummary summarize(const Simulation& sim, const ProtocolState& protocol, doubl
       protocol.phase == Phase::settle ? 0.0 : summary.plastic_dissipation - protocol.plastic_at_load_start;
   summary.narrow_phase_failures = sim.contact_counts().narrow_phase_failures;
   summary.finished = done;
+  const EnergyBalance energy = ledger.balance(sim);
+  summary.plate_work = energy.plate_work();
+  summary.gravity_work = energy.gravity_work;
+  summary.energy_residual = energy.residual;
+  summary.energy_residual_fraction = energy.work() != 0.0 ? energy.residual / energy.work() : 0.0;
   return summary;
 }
 
@@ -148,7 +162,10 @@ void write_summary_file(const std::string& path, const std::string& scenario_sou
       << "\nspringback_percent = " << s.springback_percent << "\nloaded_porosity = " << s.loaded_porosity
       << "\nfinal_porosity = " << s.final_porosity << "\nplastic_dissipation_pJ = " << s.plastic_dissipation
       << "\nplastic_dissipation_calendering_pJ = " << s.plastic_dissipation_calendering
-      << "\nnarrow_phase_failures = " << s.narrow_phase_failures << "\n";
+      << "\nnarrow_phase_failures = " << s.narrow_phase_failures << "\n"
+      << "plate_work_pJ = " << s.plate_work << "\ngravity_work_pJ = " << s.gravity_work
+      << "\nenergy_residual_pJ = " << s.energy_residual << "\nenergy_residual_fraction = " << s.energy_residual_fraction
+      << "\n";
 }
 
 }  // namespace ellc::scenario

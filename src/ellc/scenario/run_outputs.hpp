@@ -9,6 +9,7 @@
 #include <string>
 
 #include "ellc/engine/simulation.hpp"
+#include "ellc/scenario/diagnostics.hpp"
 #include "ellc/scenario/protocol_stages.hpp"
 #include "ellc/scenario/scenario.hpp"
 
@@ -16,18 +17,19 @@ namespace ellc::scenario {
 
 class RunOutputs {
  public:
-  // Disabled (`enabled` false), it writes nothing at all: runs in memory (tests).
-  RunOutputs(std::string directory, const OutputSpec& spec, bool enabled);
+  // Disabled (`enabled` false), it writes nothing at all: runs in memory (tests). `scales` are
+  // the scenario's constants of the diagnostics columns.
+  RunOutputs(std::string directory, const OutputSpec& spec, bool enabled, const DiagnosticScales& scales);
 
   // Creates the directory. A fresh run starts a new time series (header, the first row, frame 0)
   // and removes the frames an earlier run left there; a restart keeps the rows up to its step
-  // and appends to them.
-  void open(const engine::Simulation& sim, Phase phase, bool restarted);
+  // and appends to them. `ledger`: the run's energy ledger, for the energy columns.
+  void open(const engine::Simulation& sim, Phase phase, bool restarted, const EnergyLedger& ledger);
   // One row of the time series, labelled with `phase`.
-  void record_sample(const engine::Simulation& sim, Phase phase);
+  void record_sample(const engine::Simulation& sim, Phase phase, const EnergyLedger& ledger);
   // After a step: the row and the frame when their cadence says so, and the last frame once the
   // protocol is `done`. Returns true when a checkpoint is due (its cadence, or the end).
-  [[nodiscard]] bool after_step(const engine::Simulation& sim, Phase phase, bool done);
+  [[nodiscard]] bool after_step(const engine::Simulation& sim, Phase phase, bool done, const EnergyLedger& ledger);
   void flush();
 
   [[nodiscard]] bool enabled() const noexcept { return enabled_; }
@@ -39,6 +41,7 @@ class RunOutputs {
   std::string directory_;
   OutputSpec spec_;
   bool enabled_;
+  DiagnosticScales scales_;
   std::ofstream csv_;
 };
 
@@ -58,9 +61,15 @@ struct RunSummary {
   double plastic_dissipation_calendering = 0.0;  // pJ, from the start of the load
   std::uint64_t narrow_phase_failures = 0;
   bool finished = false;
+  // The energy balance at the end of the run (diagnostics.hpp), pJ.
+  double plate_work = 0.0;        // work of both plates
+  double gravity_work = 0.0;
+  double energy_residual = 0.0;   // work − (change of stored energy + dissipated energy)
+  double energy_residual_fraction = 0.0;  // residual / work (0 when no work was done)
 };
 
-[[nodiscard]] RunSummary summarize(const engine::Simulation& sim, const ProtocolState& protocol, double dt_estimate);
+[[nodiscard]] RunSummary summarize(const engine::Simulation& sim, const ProtocolState& protocol, double dt_estimate,
+                                   const EnergyLedger& ledger);
 // summary.txt: `key = value` lines under a comment naming the scenario file.
 void write_summary_file(const std::string& path, const std::string& scenario_source, const RunSummary& summary);
 
