@@ -6,6 +6,7 @@
 #include <stdexcept>
 #include <vector>
 
+#include "ellc/io/input_error.hpp"
 #include "ellc/scenario/vtk_writer.hpp"
 
 namespace ellc::scenario {
@@ -17,10 +18,16 @@ using engine::Simulation;
 
 namespace {
 
-std::string frame_path(const std::string& directory, std::uint64_t step) {
+std::string frame_path(const std::string& directory, const char* what, std::uint64_t step) {
   char name[64];
-  std::snprintf(name, sizeof name, "particles_%09llu.vtk", static_cast<unsigned long long>(step));
+  std::snprintf(name, sizeof name, "%s_%09llu.vtk", what, static_cast<unsigned long long>(step));
   return (std::filesystem::path(directory) / "vtk" / name).string();
+}
+
+// A frame: the particles and their contacts.
+void write_frame(const std::string& directory, const Simulation& sim) {
+  write_vtk_frame(frame_path(directory, "particles", sim.step_count()), sim);
+  write_vtk_contacts(frame_path(directory, "contacts", sim.step_count()), sim);
 }
 
 std::string csv_header() {
@@ -73,7 +80,8 @@ void RunOutputs::open(const Simulation& sim, Phase phase, bool restarted, const 
     // A fresh run replaces the frames of an earlier run in the same directory (ours only).
     for (const auto& entry : std::filesystem::directory_iterator(std::filesystem::path(directory_) / "vtk")) {
       const std::string name = entry.path().filename().string();
-      if (name.rfind("particles_", 0) == 0 && entry.path().extension() == ".vtk") std::filesystem::remove(entry.path());
+      const bool ours = name.rfind("particles_", 0) == 0 || name.rfind("contacts_", 0) == 0;
+      if (ours && entry.path().extension() == ".vtk") std::filesystem::remove(entry.path());
     }
     csv_.open(csv_path, std::ios::trunc);
     csv_ << csv_header() << '\n';
@@ -82,7 +90,7 @@ void RunOutputs::open(const Simulation& sim, Phase phase, bool restarted, const 
   csv_.precision(10);
   if (!restarted) {
     record_sample(sim, phase, ledger);
-    write_vtk_frame(frame_path(directory_, 0), sim);
+    write_frame(directory_, sim);
   }
 }
 
@@ -110,10 +118,10 @@ bool RunOutputs::after_step(const Simulation& sim, Phase phase, bool done, const
   if (!enabled_) return false;
   const std::uint64_t step = sim.step_count();
   if (step % static_cast<std::uint64_t>(spec_.csv_every) == 0) record_sample(sim, phase, ledger);
-  if (due(step, spec_.vtk_every)) write_vtk_frame(frame_path(directory_, step), sim);
+  if (due(step, spec_.vtk_every)) write_frame(directory_, sim);
   if (done) {
     csv_.flush();
-    if (!due(step, spec_.vtk_every)) write_vtk_frame(frame_path(directory_, step), sim);
+    if (!due(step, spec_.vtk_every)) write_frame(directory_, sim);
   }
   return done || due(step, spec_.checkpoint_every);
 }
@@ -123,7 +131,7 @@ void RunOutputs::flush() {
 }
 
 RunSummary summarize(const Simulation& sim, const ProtocolState& protocol, double dt_estimate,
-                     const EnergyLedger& ledger) {
+                     const EnergyLedger& ledger, const LoadedState& loaded) {
   const bool done = protocol.phase == Phase::done;
   RunSummary summary;
   summary.particles = sim.particles().size();
@@ -148,7 +156,32 @@ RunSummary summarize(const Simulation& sim, const ProtocolState& protocol, doubl
   summary.gravity_work = energy.gravity_work;
   summary.energy_residual = energy.residual;
   summary.energy_residual_fraction = energy.work() != 0.0 ? energy.residual / energy.work() : 0.0;
+  summary.loaded_state_recorded = loaded.recorded;
+  summary.loaded_unbalanced_force_ratio = loaded.unbalanced_force_ratio;
+  summary.loaded_kinetic_over_elastic = loaded.kinetic_over_elastic;
+  summary.loaded_validity = loaded.validity;
+  summary.loaded_validity_shares = validity_shares(loaded.validity);
   return summary;
+}
+
+std::vector<std::string> summary_warnings(const RunSummary& s) {
+  std::vector<std::string> warnings;
+  if (!s.loaded_state_recorded) return warnings;
+  const engine::ValidityReport& v = s.loaded_validity;
+  const auto percent = [](double share) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.0f %%", 100.0 * share);
+    return std::string(text);
+  };
+  const std::string beyond = " at the loaded state (end of the hold) rests on contacts beyond c_c/r^ = " +
+                             format_number(v.threshold) + ", where the law is outside its range";
+  if (s.loaded_validity_shares.wall_force > 0.5)
+    warnings.push_back(percent(s.loaded_validity_shares.wall_force) + " of the force on the plates" + beyond +
+                       " (r^ the particle's mean radius); the plate pressure extrapolates the law");
+  if (s.loaded_validity_shares.pair_force > 0.5)
+    warnings.push_back(percent(s.loaded_validity_shares.pair_force) + " of the force between particles" + beyond +
+                       " (r^ the mean radius of the smaller particle of each pair)");
+  return warnings;
 }
 
 void write_summary_file(const std::string& path, const std::string& scenario_source, const RunSummary& s) {
@@ -166,6 +199,20 @@ void write_summary_file(const std::string& path, const std::string& scenario_sou
       << "plate_work_pJ = " << s.plate_work << "\ngravity_work_pJ = " << s.gravity_work
       << "\nenergy_residual_pJ = " << s.energy_residual << "\nenergy_residual_fraction = " << s.energy_residual_fraction
       << "\n";
+  const engine::ValidityReport& v = s.loaded_validity;
+  const ValidityShares& share = s.loaded_validity_shares;
+  out << "# the loaded state (end of the hold); validity: c_c at delta_* (eq. 9) over r^ = the mean radius of the\n"
+      << "# pair's smaller particle (the particle's own against a wall), contacts beyond validity_threshold\n"
+      << "loaded_state_recorded = " << (s.loaded_state_recorded ? "true" : "false")
+      << "\nloaded_unbalanced_force_ratio = " << s.loaded_unbalanced_force_ratio
+      << "\nloaded_kinetic_over_elastic = " << s.loaded_kinetic_over_elastic
+      << "\nvalidity_threshold = " << v.threshold << "\nvalidity_r_hat = smaller_particle_of_the_pair"
+      << "\nloaded_pair_contacts = " << v.pair_contacts
+      << "\nloaded_pair_contacts_beyond_fraction = " << share.pair_contacts
+      << "\nloaded_pair_force_beyond_fraction = " << share.pair_force << "\nloaded_wall_contacts = " << v.wall_contacts
+      << "\nloaded_wall_contacts_beyond_fraction = " << share.wall_contacts
+      << "\nloaded_wall_force_beyond_fraction = " << share.wall_force
+      << "\nloaded_largest_size_ratio = " << v.largest_ratio << "\n";
 }
 
 }  // namespace ellc::scenario

@@ -1,12 +1,14 @@
 #pragma once
 // What a scenario run writes into its output directory, apart from checkpoints (checkpoint.hpp):
 // the time series timeseries.csv (one row every csv_every steps and at each phase change), the
-// VTK frames vtk/particles_<step>.vtk (the first, every vtk_every steps, the last) and
-// summary.txt. The PNG plot of the time series is drawn by the CLI (apps/ellc/dem_command.cpp).
+// VTK frames vtk/particles_<step>.vtk and vtk/contacts_<step>.vtk (the first, every vtk_every
+// steps, the last) and summary.txt. The PNG plot of the time series is drawn by the CLI
+// (apps/ellc/dem_command.cpp).
 
 #include <cstdint>
 #include <fstream>
 #include <string>
+#include <vector>
 
 #include "ellc/engine/simulation.hpp"
 #include "ellc/scenario/diagnostics.hpp"
@@ -66,10 +68,22 @@ struct RunSummary {
   double gravity_work = 0.0;
   double energy_residual = 0.0;   // work − (change of stored energy + dissipated energy)
   double energy_residual_fraction = 0.0;  // residual / work (0 when no work was done)
+  // The loaded state, when the hold ended (diagnostics.hpp); `loaded_state_recorded` is false
+  // before. The validity report counts contacts beyond c_c/r̂ = 0.16, with c_c of eq. (9) at δ_*
+  // and r̂ the mean radius of the pair's smaller particle (the particle's own against a wall).
+  bool loaded_state_recorded = false;
+  double loaded_unbalanced_force_ratio = 0.0;
+  double loaded_kinetic_over_elastic = 0.0;
+  engine::ValidityReport loaded_validity;
+  ValidityShares loaded_validity_shares;  // of loaded_validity, in [0, 1]
 };
 
 [[nodiscard]] RunSummary summarize(const engine::Simulation& sim, const ProtocolState& protocol, double dt_estimate,
-                                   const EnergyLedger& ledger);
+                                   const EnergyLedger& ledger, const LoadedState& loaded);
+// Warnings a reader of the results must see (the CLI prints them to stderr): more than half of
+// the pair force, or of the force on the walls, at the loaded state rests on contacts beyond
+// c_c/r̂ = 0.16.
+[[nodiscard]] std::vector<std::string> summary_warnings(const RunSummary& summary);
 // summary.txt: `key = value` lines under a comment naming the scenario file.
 void write_summary_file(const std::string& path, const std::string& scenario_source, const RunSummary& summary);
 

@@ -124,7 +124,7 @@ void ScenarioRunner::write_checkpoint(const std::string& path) const {
 Diagnostics ScenarioRunner::diagnostics() const noexcept { return diagnose(*simulation_, scales_, ledger_); }
 
 RunSummary ScenarioRunner::summary() const {
-  return summarize(*simulation_, protocol_.state(), dt_estimate_, ledger_);
+  return summarize(*simulation_, protocol_.state(), dt_estimate_, ledger_, loaded_);
 }
 
 std::string ScenarioRunner::write_summary() const {
