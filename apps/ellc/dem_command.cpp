@@ -162,6 +162,7 @@ void run_dem(const DemOptions& options) {
   runner.write_summary();
   const scenario::RunSummary summary = runner.summary();
   print_summary(summary, runner.output_directory(), progress.seconds());
+  std::fflush(stdout);  // the warnings after the summary they qualify, also when both go to one file
   for (const auto& warning : scenario::summary_warnings(summary)) std::fprintf(stderr, "ellc: warning: %s\n", warning.c_str());
   if (!runner.done()) std::printf("  stopped at --max-steps; continue with --restart %s\n", checkpoint.c_str());
   if (!options.no_plot) {
