@@ -107,6 +107,13 @@ void print_summary(const scenario::RunSummary& s, const std::string& directory, 
   std::printf("  springback        %.4g %%\n", s.springback_percent);
   std::printf("  plastic energy    %.6g pJ (%.6g pJ while calendering)\n", s.plastic_dissipation,
               s.plastic_dissipation_calendering);
+  std::printf("  energy residual   %.4g pJ (%.2g %% of the work done)\n", s.energy_residual,
+              100.0 * s.energy_residual_fraction);
+  if (s.loaded_state_recorded)
+    std::printf("  beyond c_c/r^ = %.2g at the loaded state: %.1f %% of the pair force, %.1f %% of the plate force "
+                "(largest %.3g)\n",
+                s.loaded_validity.threshold, 100.0 * s.loaded_validity_shares.pair_force,
+                100.0 * s.loaded_validity_shares.wall_force, s.loaded_validity.largest_ratio);
   if (s.narrow_phase_failures > 0)
     std::printf("  narrow phase      %llu failed evaluations (treated as no force)\n",
                 static_cast<unsigned long long>(s.narrow_phase_failures));
@@ -160,7 +167,10 @@ void run_single(const DemOptions& options, scenario::Scenario loaded) {
   const std::string checkpoint = (std::filesystem::path(runner.output_directory()) / "checkpoint.bin").string();
   if (!runner.done()) runner.write_checkpoint(checkpoint);
   runner.write_summary();
-  print_summary(runner.summary(), runner.output_directory(), progress.seconds());
+  const scenario::RunSummary summary = runner.summary();
+  print_summary(summary, runner.output_directory(), progress.seconds());
+  std::fflush(stdout);  // the warnings after the summary they qualify, also when both go to one file
+  for (const auto& warning : scenario::summary_warnings(summary)) std::fprintf(stderr, "ellc: warning: %s\n", warning.c_str());
   if (!runner.done()) std::printf("  stopped at --max-steps; continue with --restart %s\n", checkpoint.c_str());
   if (!options.no_plot) {
     const auto directory = std::filesystem::path(runner.output_directory());

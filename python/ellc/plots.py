@@ -111,7 +111,8 @@ def pressure_command(args):
 
 def dem_command(args):
     """Calendering from `ellc dem` timeseries.csv: plate pressure against layer thickness during
-    load, hold and unload, and the energies over time."""
+    load, hold and unload, and the energies over time (with the energy balance's terms and its
+    residual when the CSV has them)."""
     columns = read_columns(args.csv)
     phases = columns["phase"]
     figure, (left, right) = plt.subplots(1, 2, figsize=(11, 4.4), dpi=110)
@@ -138,11 +139,21 @@ def dem_command(args):
     time = columns["time"]
     right.plot(time, columns["kinetic_energy"], color="tab:red", label="kinetic")
     right.plot(time, columns["plastic_dissipation"], color="tab:purple", label="plastically dissipated")
+    if "energy_residual" in columns:  # the energy balance (ellc dem since the diagnostics columns)
+        work = [b + t + g for b, t, g in zip(columns["work_bottom_plate"], columns["work_top_plate"],
+                                             columns["gravity_work"])]
+        right.plot(time, work, color="black", lw=1.2, label="work of plates and gravity")
+        right.plot(time, [e + s for e, s in zip(columns["elastic_energy"], columns["spring_energy"])],
+                   color="tab:blue", label="stored elastic (law and springs)")
+        right.plot(time, columns["friction_dissipation"], color="tab:olive", label="friction")
+        right.plot(time, [d + g for d, g in zip(columns["damping_dissipation"], columns["drag_dissipation"])],
+                   color="tab:cyan", label="dashpots and drag")
+        right.plot(time, columns["energy_residual"], ":", color="tab:gray", label="residual of the balance")
     right.set_xlabel("time [us]")
     right.set_ylabel("energy [pJ]")
     right.set_yscale("symlog", linthresh=1.0)
     right.grid(alpha=0.3)
-    right.legend(loc="upper left")
+    right.legend(loc="upper left", fontsize=7)
     if args.title:
         figure.suptitle(args.title, fontsize=9)
     figure.tight_layout()

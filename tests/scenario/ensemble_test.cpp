@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -223,8 +224,12 @@ TEST_F(EnsembleOfTwo, StatisticsAreThoseOfTheMembersFigures) {
   std::size_t numeric_lines = 0;
   std::istringstream lines(result.members[0].summary_text);
   for (std::string line; std::getline(lines, line);)
-    if (line[0] != '#' && line.find("= true") == std::string::npos && line.find("= false") == std::string::npos)
-      ++numeric_lines;
+    if (const auto equals = line.find(" = "); line[0] != '#' && equals != std::string::npos) {
+      const std::string value = line.substr(equals + 3);
+      char* end = nullptr;
+      (void)std::strtod(value.c_str(), &end);
+      if (end != value.c_str() && *end == '\0') ++numeric_lines;  // a number, not a flag or a name
+    }
   EXPECT_EQ(result.statistics.size(), numeric_lines);
 }
 

@@ -18,6 +18,7 @@ namespace binary = engine::binary;
 namespace {
 
 constexpr std::uint64_t kCheckpointTag = 0x454c4c43'434b5032ULL;  // "ELLCCKP2": ramps and readings (was 1)
+constexpr std::uint64_t kRecordTag = 0x454c4c43'52554e31ULL;      // "ELLCRUN1"
 
 // The protocol state field by field (no padding bytes in the file: equal runs, equal files).
 template <typename Io, typename State>
@@ -52,6 +53,35 @@ void protocol_fields(Io&& io, State& state) {
   }
 }
 
+// The run's record field by field, as the protocol state.
+template <typename Io, typename Record>
+void record_fields(Io&& io, Record& record) {
+  auto& terms = record.ledger.at_start;
+  io(terms.kinetic);
+  io(terms.elastic);
+  io(terms.spring);
+  io(terms.plastic);
+  io(terms.friction);
+  io(terms.damping);
+  io(record.ledger.gravity_work);
+  io(record.ledger.drag_dissipation);
+  auto& loaded = record.loaded;
+  io(loaded.recorded);
+  io(loaded.unbalanced_force_ratio);
+  io(loaded.kinetic_over_elastic);
+  auto& validity = loaded.validity;
+  io(validity.threshold);
+  io(validity.pair_contacts);
+  io(validity.pair_contacts_beyond);
+  io(validity.pair_force);
+  io(validity.pair_force_beyond);
+  io(validity.wall_contacts);
+  io(validity.wall_contacts_beyond);
+  io(validity.wall_force);
+  io(validity.wall_force_beyond);
+  io(validity.largest_ratio);
+}
+
 }  // namespace
 
 std::uint64_t scenario_hash(const std::string& text) noexcept {
@@ -64,7 +94,7 @@ std::uint64_t scenario_hash(const std::string& text) noexcept {
 }
 
 void write_checkpoint(const std::string& path, const Scenario& scenario, const ProtocolState& protocol,
-                      double dt_estimate, const Simulation& simulation) {
+                      double dt_estimate, const Simulation& simulation, const RunRecord& record) {
   const std::string temporary = path + ".tmp";
   {
     std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
@@ -74,6 +104,8 @@ void write_checkpoint(const std::string& path, const Scenario& scenario, const P
     protocol_fields([&out](const auto& value) { binary::put(out, value); }, protocol);
     binary::put(out, dt_estimate);
     simulation.write_state(out);
+    binary::put(out, kRecordTag);
+    record_fields([&out](const auto& value) { binary::put(out, value); }, record);
     if (!out) throw std::runtime_error("writing " + temporary + " failed");
   }
   std::filesystem::rename(temporary, path);
@@ -96,6 +128,14 @@ Checkpoint read_checkpoint(const std::string& path, const Scenario& scenario, En
   settings.dt = 1.0;  // overwritten by the stored state
   checkpoint.simulation = std::make_unique<Simulation>(settings, ParticleSet{}, std::array<Wall, 2>{});
   checkpoint.simulation->read_state(in);
+  if (in.peek() != std::char_traits<char>::eof()) {
+    std::uint64_t record_tag = 0;
+    binary::get(in, record_tag);
+    if (record_tag != kRecordTag) throw InputError(path, "the checkpoint's run record is corrupt");
+    RunRecord record;
+    record_fields([&in](auto& value) { binary::get(in, value); }, record);
+    checkpoint.record = record;
+  }
   return checkpoint;
 }
 

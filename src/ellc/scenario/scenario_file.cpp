@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <limits>
 #include <sstream>
 
 #include "ellc/cases/case_file.hpp"
@@ -12,6 +13,7 @@
 #include "ellc/scenario/scenario.hpp"
 #include "ellc/io/input_error.hpp"
 #include "ellc/io/table_reader.hpp"
+#include "ellc/material/material.hpp"
 
 namespace ellc::scenario {
 
@@ -40,7 +42,8 @@ double non_negative_or(TableReader& table, std::string_view key, double fallback
   return table.non_negative(key);
 }
 
-// The shared contact-model vocabulary (src/ellc/contact/contact_parameters.hpp), plus the walls' μ.
+// The shared contact-model vocabulary (src/ellc/contact/contact_parameters.hpp), plus the walls' μ
+// under its older name (now [walls] friction).
 void read_contact(TableReader& table, ContactSettings& contact) {
   ContactModelBuilder builder(contact.model);
   for (const ContactParameterName& parameter : kContactParameters) {
@@ -57,6 +60,49 @@ void read_contact(TableReader& table, ContactSettings& contact) {
   }
   contact.model = builder.finish();
   contact.wall_friction = non_negative_or(table, "wall_friction", contact.wall_friction);
+  table.finish();
+}
+
+// [walls.material]: an elastic (or elastic–plastic) plate; without yield_stress it never yields.
+Material read_wall_material(TableReader& table) {
+  Material material;
+  material.youngs_modulus = table.positive("youngs_modulus");
+  material.poisson_ratio = table.number("poisson_ratio");
+  if (!(material.poisson_ratio > -1.0 && material.poisson_ratio < 0.5))
+    table.fail("poisson_ratio", material.poisson_ratio, "a Poisson ratio in the open interval (-1, 0.5)");
+  material.yield_stress = table.has("yield_stress") ? table.positive("yield_stress")
+                                                    : std::numeric_limits<double>::infinity();
+  table.finish();
+  return material;
+}
+
+// [walls]: what the plates are made of, material = "particle" (default: the particles' own
+// material, a mirror-image half-space), "rigid" or a [walls.material] table, and their μ.
+// `material` is the raw node of walls.material, to tell its two forms apart.
+void read_walls(TableReader& table, const toml::node* material, bool contact_gave_friction, ContactSettings& contact) {
+  constexpr const char* kMaterialChoices =
+      "one of \"particle\", \"rigid\", or a table [walls.material] with youngs_modulus, poisson_ratio and "
+      "optionally yield_stress";
+  if (material != nullptr && !material->is_table() && !material->is_string())
+    table.fail("material", material->is_number() ? "a number" : "a value of another type", kMaterialChoices);
+  if (material != nullptr && material->is_table()) {
+    auto sub_table = table.table("material");
+    contact.wall_material = read_wall_material(sub_table);
+  } else if (const std::string name = table.optional_string("material").value_or("particle"); name == "rigid") {
+    contact.wall_material = rigid_material();
+  } else if (name == "particle") {
+    contact.wall_material.reset();
+  } else {
+    table.fail("material", "\"" + name + "\"", kMaterialChoices);
+  }
+  if (table.has("friction")) {
+    const double friction = table.non_negative("friction");
+    if (contact_gave_friction)
+      table.fail("friction", friction,
+                 "one friction coefficient for the walls: [walls] friction or (the older name) [contact] "
+                 "wall_friction, not both");
+    contact.wall_friction = friction;
+  }
   table.finish();
 }
 
@@ -204,7 +250,13 @@ Scenario read(const toml::table& root_table, const std::string& source, std::str
     scenario.contact.model.hertz = spec.hertz;
     scenario.contact.model.law = spec.law;
   }
-  if (auto contact = root.optional_table("contact")) read_contact(*contact, scenario.contact);
+  bool contact_gave_wall_friction = false;
+  if (auto contact = root.optional_table("contact")) {
+    contact_gave_wall_friction = contact->has("wall_friction");
+    read_contact(*contact, scenario.contact);
+  }
+  if (auto walls = root.optional_table("walls"))
+    read_walls(*walls, root_table["walls"]["material"].node(), contact_gave_wall_friction, scenario.contact);
   {
     auto box = root.table("box");
     read_box(box, scenario);

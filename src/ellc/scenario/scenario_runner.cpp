@@ -28,7 +28,8 @@ ScenarioRunner::ScenarioRunner(Scenario scenario, RunOptions options)
     : scenario_(std::move(scenario)),
       options_(std::move(options)),
       protocol_(scenario_),
-      outputs_(directory_for(scenario_, options_), scenario_.output, options_.write_files),
+      scales_(diagnostic_scales(scenario_)),
+      outputs_(directory_for(scenario_, options_), scenario_.output, options_.write_files, scales_),
       warnings_(scenario_.warnings) {
   EngineSettings settings;
   settings.contact = scenario_.contact;
@@ -47,7 +48,17 @@ void ScenarioRunner::restore(EngineSettings settings) {
   simulation_ = std::move(checkpoint.simulation);
   dt_estimate_ = checkpoint.dt_estimate;
   protocol_.restore(checkpoint.protocol, *simulation_);
-  outputs_.open(*simulation_, protocol_.state().phase, true);
+  RunRecord record;
+  if (checkpoint.record)
+    record = *checkpoint.record;
+  else
+    warnings_.push_back(options_.restart_path +
+                        " predates the run record: the energy columns assume a start at rest without overlaps and "
+                        "no gravity or drag before the restart, and the loaded state is only reported if the "
+                        "hold ends after it");
+  ledger_.restore(record.ledger, *simulation_);
+  loaded_ = record.loaded;
+  outputs_.open(*simulation_, protocol_.state().phase, true, ledger_);
 }
 
 void ScenarioRunner::build_packing(EngineSettings settings) {
@@ -71,13 +82,17 @@ void ScenarioRunner::build_packing(EngineSettings settings) {
   }
   const std::array<Wall, 2> walls = protocol_.start(settings, particles);
   simulation_ = std::make_unique<Simulation>(settings, std::move(particles), walls);
-  outputs_.open(*simulation_, protocol_.state().phase, false);
+  ledger_.start(*simulation_);
+  outputs_.open(*simulation_, protocol_.state().phase, false, ledger_);
   if (const auto first = protocol_.initial_transition()) enter(*first);
 }
 
 // The row at a phase change shows the state just before it, labelled with the phase it ends.
+// The end of the hold is the loaded state the summary reports.
 void ScenarioRunner::enter(Phase phase) {
-  outputs_.record_sample(*simulation_, protocol_.state().phase);
+  outputs_.record_sample(*simulation_, protocol_.state().phase, ledger_);
+  if (protocol_.state().phase == Phase::hold && phase != Phase::hold)
+    loaded_ = scenario::loaded_state(*simulation_, scales_, ledger_);
   protocol_.enter(*simulation_, phase);
 }
 
@@ -93,11 +108,12 @@ void ScenarioRunner::advance(std::uint64_t max_steps) {
       }
       throw;
     }
+    ledger_.after_step(*simulation_);
     std::optional<Phase> next;
     try {
       next = protocol_.after_step(*simulation_);
     } catch (const ProtocolError& error) {
-      outputs_.record_sample(*simulation_, protocol_.state().phase);
+      outputs_.record_sample(*simulation_, protocol_.state().phase, ledger_);
       outputs_.flush();
       if (outputs_.enabled()) {
         const std::string path = outputs_.file("checkpoint_failure.bin");
@@ -107,17 +123,22 @@ void ScenarioRunner::advance(std::uint64_t max_steps) {
       throw;
     }
     if (next) enter(*next);
-    if (outputs_.after_step(*simulation_, protocol_.state().phase, done()))
+    if (outputs_.after_step(*simulation_, protocol_.state().phase, done(), ledger_))
       write_checkpoint(outputs_.file("checkpoint.bin"));
   }
   outputs_.flush();
 }
 
 void ScenarioRunner::write_checkpoint(const std::string& path) const {
-  scenario::write_checkpoint(path, scenario_, protocol_.state(), dt_estimate_, *simulation_);
+  scenario::write_checkpoint(path, scenario_, protocol_.state(), dt_estimate_, *simulation_,
+                             RunRecord{ledger_.state(), loaded_});
 }
 
-RunSummary ScenarioRunner::summary() const { return summarize(*simulation_, protocol_.state(), dt_estimate_); }
+Diagnostics ScenarioRunner::diagnostics() const noexcept { return diagnose(*simulation_, scales_, ledger_); }
+
+RunSummary ScenarioRunner::summary() const {
+  return summarize(*simulation_, protocol_.state(), dt_estimate_, ledger_, loaded_);
+}
 
 std::string ScenarioRunner::write_summary() const {
   std::string path = outputs_.file("summary.txt");  // not const: the return moves it

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "ellc/engine/simulation.hpp"
+#include "ellc/scenario/diagnostics.hpp"
 #include "ellc/scenario/protocol_stages.hpp"
 #include "ellc/scenario/run_outputs.hpp"
 #include "ellc/scenario/scenario.hpp"
@@ -41,6 +42,9 @@ class ScenarioRunner {
   [[nodiscard]] const engine::Simulation& simulation() const noexcept { return *simulation_; }
   [[nodiscard]] const ProtocolState& state() const noexcept { return protocol_.state(); }
   [[nodiscard]] const Scenario& scenario() const noexcept { return scenario_; }
+  // The diagnostics of the current state (diagnostics.hpp), and the state when the hold ended.
+  [[nodiscard]] Diagnostics diagnostics() const noexcept;
+  [[nodiscard]] const LoadedState& loaded_state() const noexcept { return loaded_; }
   [[nodiscard]] RunSummary summary() const;
   [[nodiscard]] double progress() const noexcept;  // rough fraction done, for the progress bar
   [[nodiscard]] const std::string& output_directory() const noexcept { return outputs_.directory(); }
@@ -59,7 +63,10 @@ class ScenarioRunner {
   Scenario scenario_;
   RunOptions options_;
   LoadingProtocol protocol_;
+  DiagnosticScales scales_;
   RunOutputs outputs_;
+  EnergyLedger ledger_;
+  LoadedState loaded_;
   std::unique_ptr<engine::Simulation> simulation_;
   double dt_estimate_ = 0.0;
   std::vector<std::string> warnings_;
