@@ -6,10 +6,12 @@
 #   P/lib/pkgconfig/ellc.pc                      pkg-config --cflags --libs ellc
 #   P/bin/ellc, P/bin/lmp_ellc                   the CLI; lmp_ellc when LAMMPS was found
 #   P/lib/python3/dist-packages/ellc/            the Python package: _ellc module + python/ellc/*.py
+#   P/lib/python3.X/dist-packages/ellc.pth       puts the folder above on /usr/bin/python3's path
 #   P/share/ellc/examples/                       the example case, scenario and LAMMPS input files
 #
 # Components: Development (library, headers, CMake and pkg-config files), Runtime (programs,
-# examples), Python (the package). Included from the root CMakeLists.txt after every target exists.
+# examples), Python (the package), PythonPath (ellc.pth). Included from the root CMakeLists.txt
+# after every target exists.
 include(${CMAKE_CURRENT_LIST_DIR}/install_dirs.cmake)
 include(CMakePackageConfigHelpers)
 
@@ -64,4 +66,22 @@ install(DIRECTORY ${PROJECT_SOURCE_DIR}/python/ellc/ DESTINATION ${ELLC_INSTALL_
         COMPONENT Python FILES_MATCHING PATTERN "*.py" PATTERN "__pycache__" EXCLUDE)
 if(TARGET ellc_python_module)
   install(TARGETS ellc_python_module LIBRARY DESTINATION ${ELLC_INSTALL_PYTHONDIR}/ellc COMPONENT Python)
+endif()
+# Debian's /usr/bin/python3 reads lib/python3/dist-packages of the prefix /usr only; under
+# /usr/local (where pip puts packages too) it reads lib/python3.X/dist-packages. The path file
+# lib/python3.X/dist-packages/ellc.pth adds the package folder there, as a path relative to the
+# file itself, so it follows --prefix and DESTDIR. Component PythonPath: not in the Debian package,
+# whose /usr/lib/python3/dist-packages is on the path already.
+if(NOT IS_ABSOLUTE "${ELLC_INSTALL_PYTHONDIR}")
+  execute_process(COMMAND ${ELLC_PYTHON} -c "import sys; print('python%d.%d' % sys.version_info[:2])"
+                  OUTPUT_VARIABLE _ellc_python_versioned OUTPUT_STRIP_TRAILING_WHITESPACE
+                  RESULT_VARIABLE _ellc_python_status ERROR_QUIET)
+  if(_ellc_python_status EQUAL 0)
+    set(_ellc_versioned_site lib/${_ellc_python_versioned}/dist-packages)
+    file(RELATIVE_PATH _ellc_from_site /_prefix/${_ellc_versioned_site} /_prefix/${ELLC_INSTALL_PYTHONDIR})
+    file(WRITE ${PROJECT_BINARY_DIR}/cmake/ellc.pth
+         "# ellc: the package folder ${ELLC_INSTALL_PYTHONDIR} of this prefix (cmake/install.cmake)\n"
+         "${_ellc_from_site}\n")
+    install(FILES ${PROJECT_BINARY_DIR}/cmake/ellc.pth DESTINATION ${_ellc_versioned_site} COMPONENT PythonPath)
+  endif()
 endif()
