@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# Installs every Debian package ellc needs to build, test, plot, run LAMMPS and the FE reference.
+# Installs every Debian package ellc needs to build, test, plot, run LAMMPS and the FE reference,
+# and to check the Debian package.
 # Idempotent: packages already present are skipped by apt-get. Needs root (or sudo).
 set -euo pipefail
 
@@ -11,6 +12,7 @@ packages=(
   libceres-dev
   lammps liblammps-dev libopenmpi-dev openmpi-bin libfmt-dev
   gmsh python3-gmsh calculix-ccx
+  debootstrap  # the clean Debian root of scripts/check_deb.sh
 )
 
 missing=()
