@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# Installs every Debian package ellc needs to build, test, plot, run LAMMPS and the FE reference.
+# Installs every Debian package ellc needs to build, test, plot, run LAMMPS and the FE reference,
+# and to check the Debian package.
 # Idempotent: packages already present are skipped by apt-get. Needs root (or sudo).
 set -euo pipefail
 
@@ -12,6 +13,7 @@ packages=(
   lammps liblammps-dev libopenmpi-dev openmpi-bin libfmt-dev
   gmsh python3-gmsh calculix-ccx
   clang-format-15 clang-tidy-15 clang-15 libomp-15-dev llvm-15  # guard rails; TSan with libomp, llvm-symbolizer
+  debootstrap  # the clean Debian root of scripts/check_deb.sh
 )
 
 missing=()

@@ -5,14 +5,20 @@
 
 #include <cstdio>
 #include <exception>
+#include <functional>
+#include <string>
 
 #include "command_registry.hpp"
 #include "ellc/io/input_error.hpp"
+#include "plot_runner.hpp"
 
 int main(int argc, char** argv) {
   CLI::App app{"ellc: normal contact force between elastoplastic ellipsoids (Becker & Kamlah)"};
   app.require_subcommand(1);
-  app.set_version_flag("--version", "ellc 0.1.0");
+  // The version, and where the plots' Python package comes from (an installed CLI uses its own).
+  app.set_version_flag("--version", std::function<std::string()>([] {
+    return std::string("ellc ") + ELLC_VERSION + "\n" + ellc::cli::plot_setup_description();
+  }));
   for (const auto& setup : ellc::cli::command_setups()) setup(app);
   try {
     app.parse(argc, argv);

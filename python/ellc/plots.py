@@ -1,22 +1,29 @@
-"""Plots for the ellc tools. Run as ``python3 -m ellc.plots curve IN.csv OUT.png``.
+"""The figures of the ellc tools, from arrays, and their command line.
 
-Subcommands: ``curve`` (``ellc curve -o`` CSV), ``fit PREFIX`` (tables of ``ellc fit --plot PREFIX``:
-Fig. 11 and 12), ``pressure CASE.toml OUT.png`` (pressure along a_c, b_c and contact ellipses of a
-case file, Fig. 4/9/14; needs the compiled module), ``dem CSV OUT.png`` (``ellc dem``
-timeseries.csv) and ``dem-ensemble OUT.png CSV...`` (the members of ``ellc dem --seeds N``, drawn
-by ``plot_pressure_thickness_ensemble``). The drawing functions live in ellc.figures.
+Each figure the C++ tools draw is a function of numpy arrays (or lists) that returns the
+matplotlib Figure, so the same figure can be made in Python from computed results:
+
+* :func:`curve_figure`     ``ellc curve --plot``: F/F_pY against delta/delta_Y (Fig. 13, 15)
+* :func:`fit_figures`      ``ellc fit --plot PREFIX``: lambda profiles (Fig. 11), radius fits (Fig. 12)
+* :func:`dem_figure`       ``ellc dem``'s pressure_thickness.png: plate pressure against thickness
+* :func:`pressure_figure`  pressure along a_c and b_c and the contact ellipses (Fig. 4, 9, 14)
+
+The command line reads the CSV tables the tools write and calls these functions; the CLI runs it as
+``python3 -m ellc.plots curve IN.csv OUT.png`` (subcommands ``curve``, ``fit PREFIX``,
+``pressure CASE.toml OUT.png``, which needs the compiled module, ``dem IN.csv OUT.png``, and
+``dem-ensemble OUT.png CSV...`` for the members of ``ellc dem --seeds N``, drawn by
+:func:`plot_pressure_thickness_ensemble`).
+The single panels live in ellc.figures.
 """
 
 import argparse
 import csv
 import sys
 
-import matplotlib
+import matplotlib.pyplot as plt
+import numpy as np
 
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
-
-from ellc.figures import style_normalized_force_axes  # noqa: E402
+from ellc import figures
 
 
 def read_columns(path):
@@ -33,36 +40,135 @@ def read_columns(path):
     return columns
 
 
-def plot_force_overlap(columns, axes, title=None):
-    """F/F_pY against delta/delta_Y as in the paper's Fig. 13 and 15."""
-    x = columns["overlap_over_yield"]
-    axes.plot(x, columns["force_over_yield"], color="tab:blue", lw=2, label="ellipsoids (Becker-Kamlah)")
-    if "force_equal_volume_spheres_over_yield" in columns:
-        axes.plot(x, columns["force_equal_volume_spheres_over_yield"], "--", color="tab:green",
+def curve_figure(overlap_over_yield, force_over_yield, equal_volume_spheres=None, elastic_fully_plastic=None,
+                 title=None):
+    """F/F_pY against delta/delta_Y as ``ellc curve --plot`` draws it (paper Fig. 13 and 15).
+
+    The arrays are the CSV columns of ``ellc curve`` of the same names: ``overlap_over_yield``,
+    ``force_over_yield`` and, optionally, ``force_equal_volume_spheres_over_yield`` and
+    ``force_elastic_fully_plastic_over_yield``, drawn dashed and dotted. Returns the Figure.
+    """
+    figure, axes = plt.subplots(figsize=(6.4, 4.8), dpi=120)
+    x = np.asarray(overlap_over_yield, dtype=float)
+    axes.plot(x, np.asarray(force_over_yield, dtype=float), color="tab:blue", lw=2,
+              label="ellipsoids (Becker-Kamlah)")
+    if equal_volume_spheres is not None:
+        axes.plot(x, np.asarray(equal_volume_spheres, dtype=float), "--", color="tab:green",
                   label="equal-volume spheres")
-    if "force_elastic_fully_plastic_over_yield" in columns:
-        axes.plot(x, columns["force_elastic_fully_plastic_over_yield"], ":", color="tab:gray",
+    if elastic_fully_plastic is not None:
+        axes.plot(x, np.asarray(elastic_fully_plastic, dtype=float), ":", color="tab:gray",
                   label="elastic-fully plastic (Thornton)")
-    style_normalized_force_axes(axes)
+    figures.style_normalized_force_axes(axes)
     if title:
         axes.set_title(title, fontsize=9)
+    figure.tight_layout()
+    return figure
+
+
+def fit_figures(panels, radius_ratio, lambda_max, epsilon_max, curve_ratio, lambda_curve, epsilon_curve,
+                prior_curves=None):
+    """The two figures of ``ellc fit --plot``: ``(lambda_figure, radius_figure)``.
+
+    ``panels`` is one dict per case as :func:`ellc.figures.plot_lambda_panels` takes (Fig. 11). The
+    other arguments are those of :func:`ellc.figures.plot_radius_fits` (Fig. 12): lambda_max and
+    epsilon_max per case against R_e/r^, and the eq. (52) curves on ``curve_ratio``.
+    (:func:`ellc.figures.plot_calibration` makes both straight from an ``ellc.CalibrationResult``.)
+    """
+    lambda_figure = figures.plot_lambda_panels(panels)
+    radius_figure, axes_pair = plt.subplots(1, 2, figsize=(10, 4.2), dpi=110)
+    figures.plot_radius_fits(radius_ratio, lambda_max, epsilon_max, curve_ratio, lambda_curve, epsilon_curve,
+                             axes_pair=axes_pair, prior_curves=prior_curves)
+    radius_figure.tight_layout()
+    return lambda_figure, radius_figure
+
+
+# The energy-balance columns of timeseries.csv (ellc dem), drawn when all are given.
+ENERGY_COLUMNS = ("work_bottom_plate", "work_top_plate", "gravity_work", "elastic_energy", "spring_energy",
+                  "friction_dissipation", "damping_dissipation", "drag_dissipation", "energy_residual")
+
+
+def dem_figure(thickness, plate_pressure, phase, time, kinetic_energy, plastic_dissipation, title=None,
+               energies=None):
+    """Calendering as ``ellc dem`` draws it (pressure_thickness.png); returns the Figure.
+
+    Left: plate pressure [MPa] against layer thickness [um], one colour per ``phase`` (``"load"``,
+    ``"hold"``, ``"unload"``), zoomed on where the pressure exceeds 1 % of its maximum. Right: the
+    kinetic and the plastically dissipated energy [pJ] against ``time`` [us], and with
+    ``energies`` (a dict of the ENERGY_COLUMNS) the whole energy balance. The arguments are the
+    columns of ``timeseries.csv`` of the same names.
+    """
+    thickness = np.asarray(thickness, dtype=float)
+    pressure = np.asarray(plate_pressure, dtype=float)
+    phase = np.asarray(phase, dtype=str)
+    figure, (left, right) = plt.subplots(1, 2, figsize=(11, 4.4), dpi=110)
+    colours = {"load": "tab:blue", "hold": "tab:orange", "unload": "tab:green"}
+    for name, colour in colours.items():
+        rows = phase == name
+        if rows.any():
+            left.plot(thickness[rows], pressure[rows], ".-", ms=2, lw=1.2, color=colour, label=name)
+    # Zoom on the calendering proper: where the plate pressure exceeds 1 % of its maximum (the
+    # compaction of the loose deposit before it is a long flat tail).
+    peak = pressure.max() if pressure.size else 0.0
+    pressed = thickness[pressure > 0.01 * peak]
+    if pressed.size:
+        low, high = pressed.min(), pressed.max()
+        margin = 0.15 * (high - low) + 1e-9
+        left.set_xlim(low - margin, high + margin)
+    left.set_xlabel("layer thickness (plate gap) [um]")
+    left.set_ylabel("plate pressure [MPa]")
+    left.set_ylim(bottom=0)
+    left.grid(alpha=0.3)
+    left.legend(loc="upper right")
+    right.plot(time, kinetic_energy, color="tab:red", label="kinetic")
+    right.plot(time, plastic_dissipation, color="tab:purple", label="plastically dissipated")
+    if energies is not None:
+        e = {name: np.asarray(values, dtype=float) for name, values in energies.items()}
+        right.plot(time, e["work_bottom_plate"] + e["work_top_plate"] + e["gravity_work"], color="black", lw=1.2,
+                   label="work of plates and gravity")
+        right.plot(time, e["elastic_energy"] + e["spring_energy"], color="tab:blue",
+                   label="stored elastic (law and springs)")
+        right.plot(time, e["friction_dissipation"], color="tab:olive", label="friction")
+        right.plot(time, e["damping_dissipation"] + e["drag_dissipation"], color="tab:cyan", label="dashpots and drag")
+        right.plot(time, e["energy_residual"], ":", color="tab:gray", label="residual of the balance")
+    right.set_xlabel("time [us]")
+    right.set_ylabel("energy [pJ]")
+    right.set_yscale("symlog", linthresh=1.0)
+    right.grid(alpha=0.3)
+    right.legend(loc="upper left", fontsize=7)
+    if title:
+        figure.suptitle(title, fontsize=9)
+    figure.tight_layout()
+    return figure
+
+
+def pressure_figure(contact, path, title=None):
+    """Pressure along a_c and b_c and the contact ellipses of an ``ellc.Contact`` along an overlap
+    path (array), at the states of :func:`ellc.figures.contact_states`; returns the Figure."""
+    patches, labels = figures.contact_states(contact, np.asarray(path, dtype=float))
+    figure, axes = plt.subplots(1, 3, figsize=(14, 4.2), dpi=110)
+    figures.plot_pressure_profiles(patches, labels, contact.constants.yield_stress, axes_pair=axes[:2])
+    figures.plot_contact_ellipses(patches, labels, axes=axes[2])
+    if title:
+        figure.suptitle(title, fontsize=9)
+    figure.tight_layout()
+    return figure
+
+
+def _save(figure, path):
+    figure.savefig(path)
+    plt.close(figure)
 
 
 def curve_command(args):
     columns = read_columns(args.csv)
-    figure, axes = plt.subplots(figsize=(6.4, 4.8), dpi=120)
-    plot_force_overlap(columns, axes, args.title)
-    figure.tight_layout()
-    figure.savefig(args.png)
+    _save(curve_figure(columns["overlap_over_yield"], columns["force_over_yield"],
+                       columns.get("force_equal_volume_spheres_over_yield"),
+                       columns.get("force_elastic_fully_plastic_over_yield"), title=args.title), args.png)
     return 0
 
 
 def fit_command(args):
     """PREFIX_lambda.png (Fig. 11, one panel per case) and PREFIX_radius.png (Fig. 12)."""
-    import numpy as np
-
-    from ellc import figures
-
     samples = read_columns(args.prefix + "_lambda.csv")
     cases = read_columns(args.prefix + "_cases.csv")
     radius = read_columns(args.prefix + "_radius.csv")
@@ -76,36 +182,22 @@ def fit_command(args):
         panel.update(name=name, radius_ratio=float(cases["radius_ratio"][index]),
                      plateau_reached=float(cases["plateau_reached"][index]) > 0)
         panels.append(panel)
-    figure = figures.plot_lambda_panels(panels)
-    figure.savefig(args.prefix + "_lambda.png")
-    plt.close(figure)
-
-    figure, axes_pair = plt.subplots(1, 2, figsize=(10, 4.2), dpi=110)
-    figures.plot_radius_fits(cases["radius_ratio"], cases["lambda_max"], cases["epsilon_max"],
-                             radius["radius_ratio"], radius["lambda_max_fit"], radius["epsilon_max_fit"],
-                             axes_pair=axes_pair,
-                             prior_curves=(radius["lambda_max_prior"], radius["epsilon_max_prior"]))
-    figure.tight_layout()
-    figure.savefig(args.prefix + "_radius.png")
-    plt.close(figure)
+    lambda_figure, radius_figure = fit_figures(
+        panels, cases["radius_ratio"], cases["lambda_max"], cases["epsilon_max"], radius["radius_ratio"],
+        radius["lambda_max_fit"], radius["epsilon_max_fit"],
+        prior_curves=(radius["lambda_max_prior"], radius["epsilon_max_prior"]))
+    _save(lambda_figure, args.prefix + "_lambda.png")
+    _save(radius_figure, args.prefix + "_radius.png")
     return 0
 
 
 def pressure_command(args):
     """Pressure along a_c and b_c and the contact ellipses of a case's load/unload path."""
     import ellc
-    from ellc import figures
 
     case = ellc.read_curve_case(args.case)
-    contact = ellc.Contact.from_case(case)
-    patches, labels = figures.contact_states(contact, case.overlap_path())
-    figure, axes = plt.subplots(1, 3, figsize=(14, 4.2), dpi=110)
-    figures.plot_pressure_profiles(patches, labels, contact.constants.yield_stress, axes_pair=axes[:2])
-    figures.plot_contact_ellipses(patches, labels, axes=axes[2])
-    figure.suptitle(args.title or args.case, fontsize=9)
-    figure.tight_layout()
-    figure.savefig(args.png)
-    plt.close(figure)
+    _save(pressure_figure(ellc.Contact.from_case(case), case.overlap_path(), title=args.title or args.case),
+          args.png)
     return 0
 
 
@@ -114,51 +206,10 @@ def dem_command(args):
     load, hold and unload, and the energies over time (with the energy balance's terms and its
     residual when the CSV has them)."""
     columns = read_columns(args.csv)
-    phases = columns["phase"]
-    figure, (left, right) = plt.subplots(1, 2, figsize=(11, 4.4), dpi=110)
-    colours = {"load": "tab:blue", "hold": "tab:orange", "unload": "tab:green"}
-    for phase, colour in colours.items():
-        rows = [k for k, name in enumerate(phases) if name == phase]
-        if rows:
-            left.plot([columns["thickness"][k] for k in rows], [columns["plate_pressure"][k] for k in rows],
-                      ".-", ms=2, lw=1.2, color=colour, label=phase)
-    # Zoom on the calendering proper: where the plate pressure exceeds 1 % of its maximum (the
-    # compaction of the loose deposit before it is a long flat tail).
-    pressure = columns["plate_pressure"]
-    peak = max(pressure) if pressure else 0.0
-    pressed = [t for t, p in zip(columns["thickness"], pressure) if p > 0.01 * peak]
-    if pressed:
-        low, high = min(pressed), max(pressed)
-        margin = 0.15 * (high - low) + 1e-9
-        left.set_xlim(low - margin, high + margin)
-    left.set_xlabel("layer thickness (plate gap) [um]")
-    left.set_ylabel("plate pressure [MPa]")
-    left.set_ylim(bottom=0)
-    left.grid(alpha=0.3)
-    left.legend(loc="upper right")
-    time = columns["time"]
-    right.plot(time, columns["kinetic_energy"], color="tab:red", label="kinetic")
-    right.plot(time, columns["plastic_dissipation"], color="tab:purple", label="plastically dissipated")
-    if "energy_residual" in columns:  # the energy balance (ellc dem since the diagnostics columns)
-        work = [b + t + g for b, t, g in zip(columns["work_bottom_plate"], columns["work_top_plate"],
-                                             columns["gravity_work"])]
-        right.plot(time, work, color="black", lw=1.2, label="work of plates and gravity")
-        right.plot(time, [e + s for e, s in zip(columns["elastic_energy"], columns["spring_energy"])],
-                   color="tab:blue", label="stored elastic (law and springs)")
-        right.plot(time, columns["friction_dissipation"], color="tab:olive", label="friction")
-        right.plot(time, [d + g for d, g in zip(columns["damping_dissipation"], columns["drag_dissipation"])],
-                   color="tab:cyan", label="dashpots and drag")
-        right.plot(time, columns["energy_residual"], ":", color="tab:gray", label="residual of the balance")
-    right.set_xlabel("time [us]")
-    right.set_ylabel("energy [pJ]")
-    right.set_yscale("symlog", linthresh=1.0)
-    right.grid(alpha=0.3)
-    right.legend(loc="upper left", fontsize=7)
-    if args.title:
-        figure.suptitle(args.title, fontsize=9)
-    figure.tight_layout()
-    figure.savefig(args.png)
-    plt.close(figure)
+    energies = {name: columns[name] for name in ENERGY_COLUMNS if name in columns}
+    _save(dem_figure(columns["thickness"], columns["plate_pressure"], columns["phase"], columns["time"],
+                     columns["kinetic_energy"], columns["plastic_dissipation"], title=args.title,
+                     energies=energies if len(energies) == len(ENERGY_COLUMNS) else None), args.png)
     return 0
 
 
@@ -263,6 +314,8 @@ def main(argv=None):
     ensemble.add_argument("--title")
     ensemble.set_defaults(run=dem_ensemble_command)
     args = parser.parse_args(argv)
+    if argv is None:  # run as a program (the CLI): no display, write files only
+        plt.switch_backend("Agg")
     return args.run(args)
 
 

@@ -63,3 +63,29 @@ def test_calibration_figures_from_the_result(tmp_path):
     lambda_figure.savefig(tmp_path / "lambda.png")
     radius_figure.savefig(tmp_path / "radius.png")
     assert (tmp_path / "radius.png").stat().st_size > 0
+
+
+def test_cli_figures_from_arrays(tmp_path):
+    """The figures of `ellc curve --plot`, `ellc dem` and `plots pressure` from arrays (docs/python.md)."""
+    case = ellc.read_curve_case(str(SOURCE_DIR / "examples" / "paper_case2.toml"))
+    contact = ellc.Contact.from_case(case)
+    path = case.overlap_path()
+    c = contact.constants
+
+    def sphere(body):
+        return ellc.Body(np.full(3, ellc.mean_radius(body.semi_axes)), body.material)
+
+    spheres = ellc.Contact.between(sphere(case.body_i), sphere(case.body_j))
+    figure = plots.curve_figure(path / c.yield_overlap, contact.force(path) / c.yield_force,
+                                equal_volume_spheres=spheres.force(path) / c.yield_force, title="paper case 2")
+    assert [len(axes.lines) for axes in figure.axes] == [2]
+    figure.savefig(tmp_path / "curve.png")
+    assert (tmp_path / "curve.png").stat().st_size > 0
+
+    phase = ["load"] * 6 + ["hold"] * 3 + ["unload"] * 4
+    count = len(phase)
+    figure = plots.dem_figure(np.linspace(100.0, 80.0, count), np.linspace(0.0, 50.0, count), phase,
+                              np.arange(count, dtype=float), np.ones(count), np.linspace(0.0, 5.0, count))
+    assert [len(axes.lines) for axes in figure.axes] == [3, 2]
+    assert plots.pressure_figure(contact, path).axes[2].get_aspect() == 1.0
+    plt.close("all")
