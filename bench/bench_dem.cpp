@@ -15,9 +15,9 @@
 #include <cstdlib>
 #include <memory>
 
-#include "ellc/scenario/packing.hpp"
 #include "ellc/engine/simulation.hpp"
 #include "ellc/engine/time_step.hpp"
+#include "ellc/scenario/packing.hpp"
 
 namespace {
 

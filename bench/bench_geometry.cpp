@@ -19,8 +19,8 @@
 #include <random>
 #include <vector>
 
-#include "ellc/geometry/narrow_phase.hpp"
 #include "ellc/contact/normal_contact.hpp"
+#include "ellc/geometry/narrow_phase.hpp"
 #include "ellc/geometry/wall_contact.hpp"
 
 namespace {
@@ -57,37 +57,37 @@ int median(std::vector<int> values) {
 }
 
 Pool make_pool(double step) {
-    Pool result;
-    std::mt19937_64 rng(7);
-    std::uniform_real_distribution<double> radius(0.5, 2.0), unit(0.0, 1.0);
-    while (result.body_i.size() < kPairs) {
-      const double mean_i = radius(rng), mean_j = radius(rng);
-      const Ellipsoid i(random_axes(rng, mean_i), {Eigen::Vector3d::Zero(), random_orientation(rng)});
-      const Eigen::Vector3d axes_j = random_axes(rng, mean_j);
-      const Eigen::Quaterniond orientation_j = random_orientation(rng);
-      const Eigen::Vector3d n = random_unit(rng);
-      const double overlap = 0.05 * unit(rng) * std::min(mean_i, mean_j);
-      // J placed so that n is a common normal with this overlap.
-      const Ellipsoid j_at_origin(axes_j, {Eigen::Vector3d::Zero(), orientation_j});
-      const Eigen::Vector3d centre_j = i.support_point(n) - j_at_origin.support_point(-n) - overlap * n;
-      const Ellipsoid j(axes_j, {centre_j, orientation_j});
-      // One step earlier: J a little elsewhere and turned.
-      const Eigen::Quaterniond turn(Eigen::AngleAxisd(step, random_unit(rng)));
-      const Ellipsoid j_before(axes_j, {centre_j - step * mean_j * random_unit(rng), turn.inverse() * orientation_j});
-      const NarrowPhaseResult before = ellipsoid_contact(i, j_before);
-      if (before.status != NarrowPhaseStatus::contact) continue;
-      const NarrowPhaseResult warm = ellipsoid_contact(i, j, &before.warm_start);
-      const NarrowPhaseResult cold = ellipsoid_contact(i, j);
-      if (warm.status != NarrowPhaseStatus::contact || cold.status != NarrowPhaseStatus::contact) continue;
-      result.body_i.push_back(i);
-      result.body_j.push_back(j);
-      result.warm.push_back(before.warm_start);
-      result.radius_i.push_back(mean_i);
-      result.radius_j.push_back(mean_j);
-      result.warm_iterations.push_back(warm.iterations);
-      result.cold_iterations.push_back(cold.iterations);
-    }
-    return result;
+  Pool result;
+  std::mt19937_64 rng(7);
+  std::uniform_real_distribution<double> radius(0.5, 2.0), unit(0.0, 1.0);
+  while (result.body_i.size() < kPairs) {
+    const double mean_i = radius(rng), mean_j = radius(rng);
+    const Ellipsoid i(random_axes(rng, mean_i), {Eigen::Vector3d::Zero(), random_orientation(rng)});
+    const Eigen::Vector3d axes_j = random_axes(rng, mean_j);
+    const Eigen::Quaterniond orientation_j = random_orientation(rng);
+    const Eigen::Vector3d n = random_unit(rng);
+    const double overlap = 0.05 * unit(rng) * std::min(mean_i, mean_j);
+    // J placed so that n is a common normal with this overlap.
+    const Ellipsoid j_at_origin(axes_j, {Eigen::Vector3d::Zero(), orientation_j});
+    const Eigen::Vector3d centre_j = i.support_point(n) - j_at_origin.support_point(-n) - overlap * n;
+    const Ellipsoid j(axes_j, {centre_j, orientation_j});
+    // One step earlier: J a little elsewhere and turned.
+    const Eigen::Quaterniond turn(Eigen::AngleAxisd(step, random_unit(rng)));
+    const Ellipsoid j_before(axes_j, {centre_j - step * mean_j * random_unit(rng), turn.inverse() * orientation_j});
+    const NarrowPhaseResult before = ellipsoid_contact(i, j_before);
+    if (before.status != NarrowPhaseStatus::contact) continue;
+    const NarrowPhaseResult warm = ellipsoid_contact(i, j, &before.warm_start);
+    const NarrowPhaseResult cold = ellipsoid_contact(i, j);
+    if (warm.status != NarrowPhaseStatus::contact || cold.status != NarrowPhaseStatus::contact) continue;
+    result.body_i.push_back(i);
+    result.body_j.push_back(j);
+    result.warm.push_back(before.warm_start);
+    result.radius_i.push_back(mean_i);
+    result.radius_j.push_back(mean_j);
+    result.warm_iterations.push_back(warm.iterations);
+    result.cold_iterations.push_back(cold.iterations);
+  }
+  return result;
 }
 
 const Pool& pool() {
@@ -121,7 +121,8 @@ double sphere_ns(const Pool& p) {
   const auto start = std::chrono::steady_clock::now();
   for (int round = 0; round < kRounds; ++round)
     for (std::size_t k = 0; k < kPairs; ++k)
-      benchmark::DoNotOptimize(sphere_contact(p.body_i[k].center(), p.radius_i[k], p.body_j[k].center(), p.radius_j[k]));
+      benchmark::DoNotOptimize(
+          sphere_contact(p.body_i[k].center(), p.radius_i[k], p.body_j[k].center(), p.radius_j[k]));
   return std::chrono::duration<double, std::nano>(std::chrono::steady_clock::now() - start).count() /
          (static_cast<double>(kRounds) * static_cast<double>(kPairs));
 }
@@ -137,8 +138,8 @@ void run_against_spheres(benchmark::State& state, const Pool& p, Call call) {
     k = (k + 1 == kPairs) ? 0 : k + 1;
     ++calls;
   }
-  const double own_ns =
-      std::chrono::duration<double, std::nano>(std::chrono::steady_clock::now() - start).count() / static_cast<double>(calls);
+  const double own_ns = std::chrono::duration<double, std::nano>(std::chrono::steady_clock::now() - start).count() /
+                        static_cast<double>(calls);
   const double baseline = sphere_ns(p);
   state.counters["sphere_ns"] = baseline;
   state.counters["ratio_to_sphere"] = own_ns / baseline;
@@ -156,7 +157,8 @@ BENCHMARK(BM_SphereSphere);
 
 void BM_NarrowPhaseWarm(benchmark::State& state) {
   const Pool& p = pool();
-  run_against_spheres(state, p, [&p](std::size_t k) { return ellipsoid_contact(p.body_i[k], p.body_j[k], &p.warm[k]); });
+  run_against_spheres(state, p,
+                      [&p](std::size_t k) { return ellipsoid_contact(p.body_i[k], p.body_j[k], &p.warm[k]); });
   state.counters["median_newton_iterations"] = median(p.warm_iterations);
 }
 BENCHMARK(BM_NarrowPhaseWarm);
@@ -167,14 +169,16 @@ constexpr NarrowPhaseOptions kEngineOptions{1e-3, false};
 
 void BM_NarrowPhaseWarmEngineOptions(benchmark::State& state) {
   const Pool& p = pool();
-  run_against_spheres(state, p,
-                      [&p](std::size_t k) { return ellipsoid_contact(p.body_i[k], p.body_j[k], &p.warm[k], kEngineOptions); });
+  run_against_spheres(state, p, [&p](std::size_t k) {
+    return ellipsoid_contact(p.body_i[k], p.body_j[k], &p.warm[k], kEngineOptions);
+  });
 }
 BENCHMARK(BM_NarrowPhaseWarmEngineOptions);
 
 void BM_NarrowPhaseWarmLargeStep(benchmark::State& state) {
   const Pool& p = stale_pool();
-  run_against_spheres(state, p, [&p](std::size_t k) { return ellipsoid_contact(p.body_i[k], p.body_j[k], &p.warm[k]); });
+  run_against_spheres(state, p,
+                      [&p](std::size_t k) { return ellipsoid_contact(p.body_i[k], p.body_j[k], &p.warm[k]); });
   state.counters["median_newton_iterations"] = median(p.warm_iterations);
 }
 BENCHMARK(BM_NarrowPhaseWarmLargeStep);

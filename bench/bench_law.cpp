@@ -43,7 +43,8 @@ const Batch& batch() {
       result.curvature_j.push_back(kj);
       result.alpha.push_back(angle(rng));
       result.mean_radius_sum.push_back(ri + rj);
-      result.constants.push_back(make_contact_constants(material, ki, kj, result.alpha.back(), ri + rj, HertzMode::hale));
+      result.constants.push_back(
+          make_contact_constants(material, ki, kj, result.alpha.back(), ri + rj, HertzMode::hale));
     }
     // Mixed regimes: a fifth each elastic, elastic–plastic, fully plastic; two fifths unloading.
     std::uniform_int_distribution<std::uint32_t> pick(0, kGeometries - 1);

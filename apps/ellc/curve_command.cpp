@@ -9,10 +9,10 @@
 #include <vector>
 
 #include "command_registry.hpp"
-#include "ellc/geometry/tip_contact.hpp"
 #include "ellc/cases/case_file.hpp"
-#include "ellc/io/input_error.hpp"
 #include "ellc/cases/protocol.hpp"
+#include "ellc/geometry/tip_contact.hpp"
+#include "ellc/io/input_error.hpp"
 #include "ellc/law/contact_patch.hpp"
 #include "ellc/law/law_along_path.hpp"
 #include "plot_runner.hpp"
@@ -58,8 +58,8 @@ void write_csv(std::ostream& out, const std::vector<double>& path, const Contact
     const double previous_max = index == 0 ? 0.0 : results[index - 1].max_overlap;
     const ContactPatch patch = contact_patch(constants, path[index], previous_max);
     out << path[index] << ',' << result.force << ',' << regime_name(result.regime) << ',' << result.max_overlap << ','
-        << plastic_overlap(constants, result.max_overlap) << ',' << patch.semi_axis_major << ',' << patch.semi_axis_minor << ','
-        << (patch.semi_axis_major > 0.0 ? patch.peak_pressure() : 0.0) << ','
+        << plastic_overlap(constants, result.max_overlap) << ',' << patch.semi_axis_major << ','
+        << patch.semi_axis_minor << ',' << (patch.semi_axis_major > 0.0 ? patch.peak_pressure() : 0.0) << ','
         << path[index] / constants.yield_overlap << ',' << result.force / constants.yield_force << ','
         << spheres[index].force / constants.yield_force << ','
         << elastic_fully_plastic[index].force / constants.yield_force << '\n';
@@ -97,7 +97,8 @@ void run_curve(const CurveOptions& options) {
   for (const auto& warning : curve_case.warnings) std::fprintf(stderr, "ellc: warning: %s\n", warning.c_str());
 
   const ModelSpec& model = curve_case.model;
-  const ContactConstants constants = case_contact_constants(curve_case.body_i, curve_case.body_j, model.hertz, model.law);
+  const ContactConstants constants =
+      case_contact_constants(curve_case.body_i, curve_case.body_j, model.hertz, model.law);
   const ContactConstants sphere_constants = case_contact_constants(
       equal_volume_sphere(curve_case.body_i), equal_volume_sphere(curve_case.body_j), model.hertz, model.law);
   const ContactConstants efp_constants =
@@ -122,7 +123,8 @@ void run_curve(const CurveOptions& options) {
   print_summary(summary, curve_case, constants, model.hertz, path, results);
 
   if (!options.plot_path.empty()) {
-    if (options.csv_path.empty()) throw InputError("", "--plot", options.plot_path, "-o out.csv as well (the plot reads it)");
+    if (options.csv_path.empty())
+      throw InputError("", "--plot", options.plot_path, "-o out.csv as well (the plot reads it)");
     run_python_plot({"curve", options.csv_path, options.plot_path, "--title", options.case_path});
     std::fprintf(summary, "  plot: %s\n", options.plot_path.c_str());
   }

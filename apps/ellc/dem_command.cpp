@@ -15,12 +15,12 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
-#include <vector>
 #include <memory>
 #include <optional>
 #include <sstream>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #ifdef _OPENMP
 #include <omp.h>
@@ -44,8 +44,8 @@ struct DemOptions {
   bool no_plot = false;
   bool quiet = false;
   long long max_steps = 0;
-  std::string seeds;  // --seeds N: an ensemble of N consecutive packing seeds
-  std::string jobs;   // --jobs J: ensemble members side by side
+  std::string seeds;           // --seeds N: an ensemble of N consecutive packing seeds
+  std::string jobs;            // --jobs J: ensemble members side by side
   bool compare_hertz = false;  // --compare-hertz: the same packing again with plain Hertz
 };
 
@@ -78,7 +78,8 @@ class Progress {
                    clock_text(eta).c_str());
       std::fflush(stderr);
     } else if (fraction >= next_report_ || runner.done()) {
-      std::fprintf(stderr, "ellc dem: %3.0f%%  %-6s step %llu  t = %.4g us  gap = %.4g um  p = %.4g MPa  elapsed %s  ETA %s\n",
+      std::fprintf(stderr,
+                   "ellc dem: %3.0f%%  %-6s step %llu  t = %.4g us  gap = %.4g um  p = %.4g MPa  elapsed %s  ETA %s\n",
                    100.0 * fraction, scenario::phase_name(runner.state().phase),
                    static_cast<unsigned long long>(sim.step_count()), sim.time(), sim.gap(),
                    sim.wall_pressure(engine::kTopWall), clock_text(elapsed).c_str(), clock_text(eta).c_str());
@@ -99,9 +100,10 @@ class Progress {
 };
 
 void print_summary(const scenario::RunSummary& s, const std::string& directory, double seconds) {
-  std::printf("ellc dem: %s after %llu steps (%.4g us simulated, dt = %.4g us, estimate %.4g us), %zu particles, %.1f s\n",
-              s.finished ? "finished" : "stopped", static_cast<unsigned long long>(s.steps), s.time, s.dt,
-              s.dt_estimate, s.particles, seconds);
+  std::printf(
+      "ellc dem: %s after %llu steps (%.4g us simulated, dt = %.4g us, estimate %.4g us), %zu particles, %.1f s\n",
+      s.finished ? "finished" : "stopped", static_cast<unsigned long long>(s.steps), s.time, s.dt, s.dt_estimate,
+      s.particles, seconds);
   std::printf("  max pressure      %.6g MPa\n", s.max_pressure);
   std::printf("  loaded thickness  %.6g um  (porosity %.4f)\n", s.loaded_thickness, s.loaded_porosity);
   std::printf("  final thickness   %.6g um  (porosity %.4f)\n", s.final_thickness, s.final_porosity);
@@ -111,10 +113,11 @@ void print_summary(const scenario::RunSummary& s, const std::string& directory, 
   std::printf("  energy residual   %.4g pJ (%.2g %% of the work done)\n", s.energy_residual,
               100.0 * s.energy_residual_fraction);
   if (s.loaded_state_recorded)
-    std::printf("  beyond c_c/r^ = %.2g at the loaded state: %.1f %% of the pair force, %.1f %% of the plate force "
-                "(largest %.3g)\n",
-                s.loaded_validity.threshold, 100.0 * s.loaded_validity_shares.pair_force,
-                100.0 * s.loaded_validity_shares.wall_force, s.loaded_validity.largest_ratio);
+    std::printf(
+        "  beyond c_c/r^ = %.2g at the loaded state: %.1f %% of the pair force, %.1f %% of the plate force "
+        "(largest %.3g)\n",
+        s.loaded_validity.threshold, 100.0 * s.loaded_validity_shares.pair_force,
+        100.0 * s.loaded_validity_shares.wall_force, s.loaded_validity.largest_ratio);
   if (s.narrow_phase_failures > 0)
     std::printf("  narrow phase      %llu failed evaluations (treated as no force)\n",
                 static_cast<unsigned long long>(s.narrow_phase_failures));
@@ -171,7 +174,8 @@ scenario::RunSummary run_single(const DemOptions& options, scenario::Scenario lo
   const scenario::RunSummary summary = runner.summary();
   print_summary(summary, runner.output_directory(), progress.seconds());
   std::fflush(stdout);  // the warnings after the summary they qualify, also when both go to one file
-  for (const auto& warning : scenario::summary_warnings(summary)) std::fprintf(stderr, "ellc: warning: %s\n", warning.c_str());
+  for (const auto& warning : scenario::summary_warnings(summary))
+    std::fprintf(stderr, "ellc: warning: %s\n", warning.c_str());
   if (!runner.done()) std::printf("  stopped at --max-steps; continue with --restart %s\n", checkpoint.c_str());
   if (!options.no_plot) {
     const auto directory = std::filesystem::path(runner.output_directory());
@@ -184,8 +188,8 @@ scenario::RunSummary run_single(const DemOptions& options, scenario::Scenario lo
 
 // --compare-hertz: the same scenario (same packing, same protocol) with the normal law replaced
 // by plain Hertz, into DIR/hertz; what plasticity changes, printed and in DIR/compare_hertz.txt.
-void compare_with_hertz(const DemOptions& options, const scenario::Scenario& loaded,
-                        const scenario::RunSummary& law, const std::string& directory) {
+void compare_with_hertz(const DemOptions& options, const scenario::Scenario& loaded, const scenario::RunSummary& law,
+                        const std::string& directory) {
   scenario::Scenario hertz = loaded;
   hertz.contact.model.normal = NormalModel::hertz;
   DemOptions quiet = options;
@@ -243,7 +247,8 @@ void run_members(const DemOptions& options, const scenario::Scenario& loaded, co
                    static_cast<unsigned long long>(member.seed), member.directory.c_str());
     if (one_at_a_time) progress = std::make_unique<Progress>(options.quiet);
   };
-  if (one_at_a_time) ensemble.on_progress = [&](const EnsembleMember&, const ScenarioRunner& runner) { progress->update(runner); };
+  if (one_at_a_time)
+    ensemble.on_progress = [&](const EnsembleMember&, const ScenarioRunner& runner) { progress->update(runner); };
   ensemble.on_member_end = [&](const EnsembleMember& member, const ScenarioRunner*) {
     if (progress) progress->finish();
     for (const auto& warning : member.warnings)
@@ -252,11 +257,12 @@ void run_members(const DemOptions& options, const scenario::Scenario& loaded, co
                      warning.c_str());
     const auto seed = static_cast<unsigned long long>(member.seed);
     if (member.finished)
-      std::printf("ellc dem: seed %llu finished: %llu steps, max pressure %.6g MPa, loaded %.6g um, final %.6g um, "
-                  "springback %.4g %%, %.1f s\n",
-                  seed, static_cast<unsigned long long>(member.summary.steps), member.summary.max_pressure,
-                  member.summary.loaded_thickness, member.summary.final_thickness, member.summary.springback_percent,
-                  member.seconds);
+      std::printf(
+          "ellc dem: seed %llu finished: %llu steps, max pressure %.6g MPa, loaded %.6g um, final %.6g um, "
+          "springback %.4g %%, %.1f s\n",
+          seed, static_cast<unsigned long long>(member.summary.steps), member.summary.max_pressure,
+          member.summary.loaded_thickness, member.summary.final_thickness, member.summary.springback_percent,
+          member.seconds);
     else
       std::printf("ellc dem: seed %llu FAILED after %.1f s: %s\n", seed, member.seconds, member.error.c_str());
     std::fflush(stdout);
@@ -314,13 +320,15 @@ void run_dem(const DemOptions& options) {
   scenario::Scenario loaded = scenario::read_scenario(options.scenario_path);
   std::optional<long long> count;
   if (!options.seeds.empty())
-    count = integer_option("--seeds", options.seeds,
-                           "a number of packing seeds, an integer in [1, " +
-                               std::to_string(scenario::kMaxEnsembleMembers) + "]");
+    count = integer_option(
+        "--seeds", options.seeds,
+        "a number of packing seeds, an integer in [1, " + std::to_string(scenario::kMaxEnsembleMembers) + "]");
   int jobs = 1;
   if (!options.jobs.empty()) {
-    const long long value = integer_option("--jobs", options.jobs, "a number of members run side by side, an integer >= 1");
-    if (value < 1) throw InputError("", "--jobs", options.jobs, "a number of members run side by side, an integer >= 1");
+    const long long value =
+        integer_option("--jobs", options.jobs, "a number of members run side by side, an integer >= 1");
+    if (value < 1)
+      throw InputError("", "--jobs", options.jobs, "a number of members run side by side, an integer >= 1");
     jobs = static_cast<int>(std::min<long long>(value, static_cast<long long>(scenario::kMaxEnsembleMembers)));
   }
   // A checkpoint continues one run, also one member of an ensemble (its packing is in the checkpoint).
@@ -366,7 +374,8 @@ const RegisterCommand registration([](CLI::App& root) {
   CLI::App* command = root.add_subcommand("dem", "Generate and calender an ellipsoid packing with the built-in DEM");
   command->add_option("scenario", options->scenario_path, "Scenario file (TOML), e.g. examples/calendering.toml")
       ->required();
-  command->add_option("-o,--output,--output-dir", options->output_directory, "Output directory (overrides [output].directory)");
+  command->add_option("-o,--output,--output-dir", options->output_directory,
+                      "Output directory (overrides [output].directory)");
   command->add_option("-j,--threads", options->threads, "OpenMP threads (results do not depend on it)")
       ->check(CLI::PositiveNumber);
   command->add_option("--restart", options->restart_path, "Continue from a checkpoint written by this scenario");
@@ -375,8 +384,9 @@ const RegisterCommand registration([](CLI::App& root) {
   command->add_flag("-q,--quiet", options->quiet, "No progress output");
   command->add_option("--max-steps", options->max_steps, "Stop after this many steps and write a checkpoint")
       ->check(CLI::PositiveNumber);
-  command->add_option("--seeds", options->seeds,
-                      "Run an ensemble: N packing seeds from [packing] seed (seed, seed+1, ...), each in DIR/seed_<s>/");
+  command->add_option(
+      "--seeds", options->seeds,
+      "Run an ensemble: N packing seeds from [packing] seed (seed, seed+1, ...), each in DIR/seed_<s>/");
   command->add_flag("--compare-hertz", options->compare_hertz,
                     "Run the same packing again with plain Hertz and compare springback and energies");
   command->add_option("--jobs", options->jobs, "Ensemble members run side by side (default 1; one engine thread each)");

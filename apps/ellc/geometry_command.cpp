@@ -48,12 +48,12 @@ void print_curvature(const std::string& side, const SurfaceCurvature& c) {
 void print_law(const NormalContact& contact, HertzMode mode) {
   const ContactConstants& c = contact.constants;
   std::printf("  law (Hertz %s):\n", mode == HertzMode::exact ? "exact" : "hale");
-  std::printf("    R_e = %.10g µm, e = %.10g, f1 = %.10g, f2 = %.10g\n", c.equivalent_radius, std::sqrt(c.eccentricity_sq),
-              c.f1, c.f2);
+  std::printf("    R_e = %.10g µm, e = %.10g, f1 = %.10g, f2 = %.10g\n", c.equivalent_radius,
+              std::sqrt(c.eccentricity_sq), c.f1, c.f2);
   std::printf("    delta_Y = %.10g µm, F_pY = %.10g µN, delta_max = %.10g µm\n", c.yield_overlap, c.yield_force,
               c.plastic_limit_overlap);
-  std::printf("    force = %.10g µN (%s), delta_* after = %.10g µm\n", contact.law.force, regime_name(contact.law.regime),
-              contact.law.max_overlap);
+  std::printf("    force = %.10g µN (%s), delta_* after = %.10g µm\n", contact.law.force,
+              regime_name(contact.law.regime), contact.law.max_overlap);
   print_vector("  force on J", contact.force_on_j);
   print_vector("  application point", contact.application_point);
 }
@@ -79,7 +79,8 @@ void run_geometry(const GeometryOptions& options) {
   }
 
   const ContactGeometry& g = result.geometry;
-  std::printf("ellc geometry: %s (%s)\n", options.poses_path.c_str(), poses.body_j ? "ellipsoid pair" : "ellipsoid and wall");
+  std::printf("ellc geometry: %s (%s)\n", options.poses_path.c_str(),
+              poses.body_j ? "ellipsoid pair" : "ellipsoid and wall");
   std::printf("  status                 %s\n", status_name(result.status));
   if (result.status == NarrowPhaseStatus::failed)
     throw std::runtime_error("the narrow phase did not converge for this configuration (status failed)");
@@ -95,7 +96,8 @@ void run_geometry(const GeometryOptions& options) {
   print_curvature("I", g.curvature_i);
   print_curvature(poses.body_j ? "J" : "wall", g.curvature_j);
   std::printf("  alpha                  %.10g deg\n", g.alpha / kDegree);
-  std::printf("  r_hat I+J              %.10g µm%s\n", mean_radius_sum, poses.body_j ? "" : "  (wall: 2 r_hat, mirror image)");
+  std::printf("  r_hat I+J              %.10g µm%s\n", mean_radius_sum,
+              poses.body_j ? "" : "  (wall: 2 r_hat, mirror image)");
   const NormalContact contact =
       normal_contact(g, material, mean_radius_sum, poses.model.hertz, poses.model.law, poses.max_overlap);
   if (const std::string error = validation_error(contact.constants); !error.empty())
@@ -107,8 +109,9 @@ const RegisterCommand registration([](CLI::App& root) {
   auto options = std::make_shared<GeometryOptions>();
   CLI::App* command =
       root.add_subcommand("geometry", "Contact point, normal, overlap, curvatures and force of two posed bodies");
-  command->add_option("poses", options->poses_path,
-                      "Poses file (TOML): [material], [body_I], [body_J] or [wall], optional [model], max_overlap")
+  command
+      ->add_option("poses", options->poses_path,
+                   "Poses file (TOML): [material], [body_I], [body_J] or [wall], optional [model], max_overlap")
       ->required();
   command->add_option("--hertz", options->hertz, "Hertz solution: hale or exact (overrides [model].hertz)")
       ->check(CLI::IsMember({"hale", "exact"}));

@@ -17,8 +17,8 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   // The version, and where the plots' Python package comes from (an installed CLI uses its own).
   app.set_version_flag("--version", std::function<std::string()>([] {
-    return std::string("ellc ") + ELLC_VERSION + "\n" + ellc::cli::plot_setup_description();
-  }));
+                         return std::string("ellc ") + ELLC_VERSION + "\n" + ellc::cli::plot_setup_description();
+                       }));
   for (const auto& setup : ellc::cli::command_setups()) setup(app);
   try {
     app.parse(argc, argv);

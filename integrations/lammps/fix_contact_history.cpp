@@ -11,8 +11,10 @@ using namespace LAMMPS_NS::FixConst;
 
 FixContactHistory::FixContactHistory(LAMMPS* instance, int narg, char** arg) : Fix(instance, narg, arg) {
   if (narg != 4)
-    fail(error, FLERR, std::string("fix ") + kStyle + " takes one argument (values per contact); it is created by "
-                       "pair_style ellipsoid/bk and is not meant to be declared by hand");
+    fail(error, FLERR,
+         std::string("fix ") + kStyle +
+             " takes one argument (values per contact); it is created by "
+             "pair_style ellipsoid/bk and is not meant to be declared by hand");
   nvalues_ = utils::inumeric(FLERR, arg[3], false, instance);
   if (nvalues_ < 1) fail(error, FLERR, std::string("fix ") + kStyle + ": values per contact must be positive");
 

@@ -58,12 +58,10 @@ struct PairEvaluation {
 // narrow phase's separating axis may be kept (keep_warm_start). A failed narrow phase leaves the
 // history as it was, as in the built-in engine.
 [[nodiscard]] PairEvaluation evaluate_pair(const AtomBody& a, const AtomBody& b,
-                                           const ellc::InteractionContext& context, double timestep,
-                                           double* history);
+                                           const ellc::InteractionContext& context, double timestep, double* history);
 
 // The same, posing the bodies from their states (tests, one-off evaluations).
 [[nodiscard]] PairEvaluation evaluate_pair(const BodyState& a, const BodyState& b,
-                                           const ellc::InteractionContext& context, double timestep,
-                                           double* history);
+                                           const ellc::InteractionContext& context, double timestep, double* history);
 
 }  // namespace ellc_lammps

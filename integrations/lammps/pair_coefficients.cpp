@@ -118,11 +118,13 @@ ellc::InteractionContext mixed_pair(const TypeCoefficients& type_i, const TypeCo
                                     std::string& error) {
   error.clear();
   if (!same_law(type_i.model.law, type_j.model.law))
-    error = "the two types have different law parameters (lambda, epsilon, exponent, yield_factor); give this "
-            "pair of types its own pair_coeff line";
+    error =
+        "the two types have different law parameters (lambda, epsilon, exponent, yield_factor); give this "
+        "pair of types its own pair_coeff line";
   else if (!same_sub_models(type_i.model, type_j.model))
-    error = "the two types have different sub-models (normal, damping_model, tangential_model, "
-            "narrow_phase_final_step); give this pair of types its own pair_coeff line";
+    error =
+        "the two types have different sub-models (normal, damping_model, tangential_model, "
+        "narrow_phase_final_step); give this pair of types its own pair_coeff line";
   ellc::ContactModel model = type_i.model;
   model.friction = std::sqrt(type_i.model.friction * type_j.model.friction);
   model.normal_damping = std::sqrt(type_i.model.normal_damping * type_j.model.normal_damping);

@@ -61,9 +61,12 @@ void PairEllipsoidBK::settings(int narg, char** arg) {
     if (keyword != "hertz" || at + 1 >= narg)
       fail(error, FLERR, style_prefix() + "unknown setting '" + keyword + "' (expected: hertz hale|exact)");
     const std::string value = arg[at + 1];
-    if (value == "hale") hertz_mode_ = ellc::HertzMode::hale;
-    else if (value == "exact") hertz_mode_ = ellc::HertzMode::exact;
-    else fail(error, FLERR, style_prefix() + "hertz must be hale or exact, got '" + value + "'");
+    if (value == "hale")
+      hertz_mode_ = ellc::HertzMode::hale;
+    else if (value == "exact")
+      hertz_mode_ = ellc::HertzMode::exact;
+    else
+      fail(error, FLERR, style_prefix() + "hertz must be hale or exact, got '" + value + "'");
   }
   // Allocated here so a missing pair_coeff is reported by init_one with the types it concerns.
   if (!allocated) allocate();
@@ -264,9 +267,10 @@ void PairEllipsoidBK::compute(int eflag, int vflag) {
     const double largest = std::max({body[0], body[1], body[2]});
     const double type_radius = type_radius_[static_cast<std::size_t>(type[index])];
     if (largest > type_radius && type_radius > 0.0)
-      fail_one(error, FLERR, style_prefix() + "atom " + std::to_string(tag[index]) +
-                             " is larger than any atom of its type was at the start of the run; re-run to update "
-                             "the contact cutoffs");
+      fail_one(error, FLERR,
+               style_prefix() + "atom " + std::to_string(tag[index]) +
+                   " is larger than any atom of its type was at the start of the run; re-run to update "
+                   "the contact cutoffs");
     BodyState& motion = motions_[slot];
     motion = body_state(index);
     if (largest > 0.0)
@@ -307,9 +311,9 @@ void PairEllipsoidBK::compute(int eflag, int vflag) {
       const int a = i_is_a ? i : j;
       const int b = i_is_a ? j : i;
       const auto sa = static_cast<std::size_t>(a), sb = static_cast<std::size_t>(b);
-      const PairEvaluation result = evaluate_pair({shapes_[sa], mean_radii_[sa], motions_[sa]},
-                                                  {shapes_[sb], mean_radii_[sb], motions_[sb]},
-                                                  pair_contexts_[type_index(type[i], type[j])], timestep, history);
+      const PairEvaluation result =
+          evaluate_pair({shapes_[sa], mean_radii_[sa], motions_[sa]}, {shapes_[sb], mean_radii_[sb], motions_[sb]},
+                        pair_contexts_[type_index(type[i], type[j])], timestep, history);
       if (result.geometry_failed && narrow_phase_failures_++ == 0)
         error->warning(FLERR, style_prefix() + "the narrow phase did not converge for atoms " + std::to_string(tag[a]) +
                                   " and " + std::to_string(tag[b]) + " at step " + std::to_string(update->ntimestep) +

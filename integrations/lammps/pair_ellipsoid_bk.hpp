@@ -13,9 +13,9 @@
 #include <string>
 #include <vector>
 
-#include "pair_adapter.hpp"
 #include "ellc/geometry/ellipsoid.hpp"
 #include "lammps_includes.hpp"
+#include "pair_adapter.hpp"
 #include "pair_coefficients.hpp"
 
 namespace ellc_lammps {
@@ -59,16 +59,16 @@ class PairEllipsoidBK : public LAMMPS_NS::Pair {
   [[nodiscard]] BodyState body_state(int index) const;
 
   ellc::HertzMode hertz_mode_ = ellc::HertzMode::hale;
-  std::vector<char> given_;                          // 1 where pair_coeff I J was given, (ntypes+1)²
-  std::vector<TypeCoefficients> type_coefficients_;  // as given by pair_coeff, (ntypes+1)²
+  std::vector<char> given_;                              // 1 where pair_coeff I J was given, (ntypes+1)²
+  std::vector<TypeCoefficients> type_coefficients_;      // as given by pair_coeff, (ntypes+1)²
   std::vector<ellc::InteractionContext> pair_contexts_;  // resolved (explicit or mixed) by init_one
-  std::vector<double> type_radius_;                   // largest semi-axis of any atom of the type
+  std::vector<double> type_radius_;                      // largest semi-axis of any atom of the type
   FixContactHistory* history_ = nullptr;
   LAMMPS_NS::Compute* bodies_compute_ = nullptr;
-  std::vector<double> bodies_;            // per atom, owned + ghost: kBodyValues
-  std::vector<ellc::Ellipsoid> shapes_;   // per atom, owned + ghost, rebuilt every step
-  std::vector<BodyState> motions_;        // velocity, angular velocity, mass (same indexing)
-  std::vector<double> mean_radii_;        // r̂ = (abc)^{1/3}
+  std::vector<double> bodies_;           // per atom, owned + ghost: kBodyValues
+  std::vector<ellc::Ellipsoid> shapes_;  // per atom, owned + ghost, rebuilt every step
+  std::vector<BodyState> motions_;       // velocity, angular velocity, mass (same indexing)
+  std::vector<double> mean_radii_;       // r̂ = (abc)^{1/3}
   bool warned_aspect_ = false;
   long narrow_phase_failures_ = 0;
   long touching_pairs_ = 0;

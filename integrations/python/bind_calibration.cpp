@@ -46,16 +46,21 @@ void bind_calibration(py::module_& module) {
              const DoubleArray force_array = vector_argument(forces, "forces", overlap_array.size(), "overlaps");
              const auto overlap_view = view(overlap_array);
              const auto force_view = view(force_array);
-             return CalibrationCase{std::move(name), body_i, body_j, {overlap_view.begin(), overlap_view.end()},
+             return CalibrationCase{std::move(name),
+                                    body_i,
+                                    body_j,
+                                    {overlap_view.begin(), overlap_view.end()},
                                     {force_view.begin(), force_view.end()}};
            }),
            py::arg("name"), py::arg("body_i"), py::arg("body_j"), py::arg("overlaps"), py::arg("forces"))
       .def_readonly("name", &CalibrationCase::name)
       .def_readonly("body_i", &CalibrationCase::body_i)
       .def_readonly("body_j", &CalibrationCase::body_j)
-      .def_property_readonly("overlaps", [](const CalibrationCase& c) {
-        return py::array_t<double>(static_cast<py::ssize_t>(c.overlaps.size()), c.overlaps.data());
-      })
+      .def_property_readonly("overlaps",
+                             [](const CalibrationCase& c) {
+                               return py::array_t<double>(static_cast<py::ssize_t>(c.overlaps.size()),
+                                                          c.overlaps.data());
+                             })
       .def_property_readonly("forces", [](const CalibrationCase& c) {
         return py::array_t<double>(static_cast<py::ssize_t>(c.forces.size()), c.forces.data());
       });
@@ -116,8 +121,9 @@ void bind_calibration(py::module_& module) {
       .def_readonly("equivalent_radius", &CaseCalibration::equivalent_radius)
       .def_readonly("yield_overlap", &CaseCalibration::yield_overlap)
       .def_readonly("yield_force", &CaseCalibration::yield_force)
-      .def_property_readonly("profile", [](const CaseCalibration& c) { return profile_arrays(c.profile); },
-                             "lambda_FEM points (eq. 51) as a dict of numpy arrays.")
+      .def_property_readonly(
+          "profile", [](const CaseCalibration& c) { return profile_arrays(c.profile); },
+          "lambda_FEM points (eq. 51) as a dict of numpy arrays.")
       .def_readonly("own", &CaseCalibration::own, "lambda_max, epsilon_max, n fitted to this case alone.")
       .def_readonly("shared", &CaseCalibration::shared, "lambda_max, epsilon_max with the n shared by all cases.")
       .def_readonly("own_rms", &CaseCalibration::own_rms)
@@ -125,12 +131,14 @@ void bind_calibration(py::module_& module) {
       .def_readonly("model_rms", &CaseCalibration::model_rms,
                     "RMS relative force error of the calibrated law (eq. 52 constants) on this case.")
       .def_readonly("plateau_reached", &CaseCalibration::plateau_reached)
-      .def("__repr__", [](const CaseCalibration& c) {
-        return py::str("CaseCalibration(name={!r}, radius_ratio={:.4g}, lambda_max={:.4g}, epsilon_max={:.4g}, "
-                       "n={:.4g}, plateau_reached={}, model_rms={:.3g})")
-            .format(c.name, c.radius_ratio, c.shared.lambda_max, c.shared.epsilon_max, c.shared.exponent,
-                    c.plateau_reached, c.model_rms);
-      })
+      .def("__repr__",
+           [](const CaseCalibration& c) {
+             return py::str(
+                        "CaseCalibration(name={!r}, radius_ratio={:.4g}, lambda_max={:.4g}, epsilon_max={:.4g}, "
+                        "n={:.4g}, plateau_reached={}, model_rms={:.3g})")
+                 .format(c.name, c.radius_ratio, c.shared.lambda_max, c.shared.epsilon_max, c.shared.exponent,
+                         c.plateau_reached, c.model_rms);
+           })
       .def_readonly("transition_found", &CaseCalibration::transition_found,
                     "False when lambda_FEM never rises from 1.6 (epsilon_max on its lower bound): a run the law "
                     "cannot describe; see the warnings.");
@@ -143,10 +151,11 @@ void bind_calibration(py::module_& module) {
       .def_readonly("rates_fitted", &CalibrationResult::rates_fitted)
       .def_readonly("amplitudes_fitted", &CalibrationResult::amplitudes_fitted)
       .def_readonly("warnings", &CalibrationResult::warnings)
-      .def("__repr__", [](const CalibrationResult& r) {
-        return py::str("CalibrationResult({} cases, fit={!r}, {} warnings)")
-            .format(r.cases.size(), py::cast(r.law.fit), r.warnings.size());
-      })
+      .def("__repr__",
+           [](const CalibrationResult& r) {
+             return py::str("CalibrationResult({} cases, fit={!r}, {} warnings)")
+                 .format(r.cases.size(), py::cast(r.law.fit), r.warnings.size());
+           })
       .def("model_toml", &model_table_toml, "The [model] table for `ellc curve` / `ellc dem`, as TOML text.")
       .def(
           "write_tables",

@@ -5,8 +5,8 @@
 
 #include "bindings.hpp"
 #include "ellc/cases/case_file.hpp"
-#include "ellc/geometry/tip_contact.hpp"
 #include "ellc/cases/protocol.hpp"
+#include "ellc/geometry/tip_contact.hpp"
 #include "numpy_support.hpp"
 
 namespace ellc::python {
@@ -24,11 +24,14 @@ void bind_cases(py::module_& module) {
       .def_readwrite("semi_axes", &BodySpec::semi_axes)
       .def_readwrite("twist", &BodySpec::twist)
       .def_readwrite("material", &BodySpec::material)
-      .def_property_readonly("mean_radius", [](const BodySpec& body) { return mean_radius(body.semi_axes); },
-                             "r^ = (a b c)^(1/3), eq. (50).");
+      .def_property_readonly(
+          "mean_radius", [](const BodySpec& body) { return mean_radius(body.semi_axes); },
+          "r^ = (a b c)^(1/3), eq. (50).");
 
   py::class_<ModelSpec>(module, "Model", "The [model] table: Hertz solution and law parameters.")
-      .def(py::init([](const std::string& hertz, const LawParameters& law) { return ModelSpec{hertz_mode(hertz), law}; }),
+      .def(py::init([](const std::string& hertz, const LawParameters& law) {
+             return ModelSpec{hertz_mode(hertz), law};
+           }),
            py::arg("hertz") = "hale", py::arg("law") = LawParameters{})
       .def_property(
           "hertz", [](const ModelSpec& model) { return std::string(hertz_name(model.hertz)); },
@@ -43,10 +46,13 @@ void bind_cases(py::module_& module) {
       .def_readwrite("model", &CurveCase::model)
       .def_readonly("warnings", &CurveCase::warnings)
       // Python keeps the name overlap_path; in C++ it is protocol_overlaps (ellc/cases/protocol.hpp).
-      .def("overlap_path", [](const CurveCase& curve_case) {
-        const std::vector<double> path = protocol_overlaps(curve_case.waypoints, curve_case.points_per_segment);
-        return py::array_t<double>(static_cast<py::ssize_t>(path.size()), path.data());
-      }, "The protocol's overlap path, exactly as `ellc curve` samples it (numpy array).");
+      .def(
+          "overlap_path",
+          [](const CurveCase& curve_case) {
+            const std::vector<double> path = protocol_overlaps(curve_case.waypoints, curve_case.points_per_segment);
+            return py::array_t<double>(static_cast<py::ssize_t>(path.size()), path.data());
+          },
+          "The protocol's overlap path, exactly as `ellc curve` samples it (numpy array).");
 
   module.def("read_curve_case", &read_curve_case, py::arg("path"),
              "Reads and validates a case file; raises ellc.InputError (a ValueError) naming the field.");

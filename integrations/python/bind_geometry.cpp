@@ -7,10 +7,10 @@
 #include <optional>
 
 #include "bindings.hpp"
+#include "ellc/contact/normal_contact.hpp"
 #include "ellc/geometry/contact_geometry.hpp"
 #include "ellc/geometry/ellipsoid.hpp"
 #include "ellc/geometry/narrow_phase.hpp"
-#include "ellc/contact/normal_contact.hpp"
 #include "ellc/geometry/tip_contact.hpp"
 #include "ellc/geometry/wall_contact.hpp"
 
@@ -30,7 +30,9 @@ void bind_geometry(py::module_& module) {
   py::class_<TipBody>(module, "TipBody",
                       "An ellipsoid with semi-axis a along the line of centres x, touching at its x tip, twisted "
                       "about x by `twist` radians.")
-      .def(py::init([](const Eigen::Vector3d& semi_axes, double twist) { return TipBody{semi_axes, twist}; }),
+      .def(py::init([](const Eigen::Vector3d& semi_axes, double twist) {
+             return TipBody{semi_axes, twist};
+           }),
            py::arg("semi_axes"), py::arg("twist") = 0.0)
       .def_readwrite("semi_axes", &TipBody::semi_axes)
       .def_readwrite("twist", &TipBody::twist);
@@ -84,7 +86,8 @@ void bind_geometry(py::module_& module) {
       .def("normal_at", &Ellipsoid::normal_at, py::arg("point"), "Outward unit normal at (the projection of) a point.")
       .def("curvature_at", &Ellipsoid::curvature_at, py::arg("point"),
            "Principal curvatures and directions at (the radial projection of) a surface point.")
-      .def("implicit_value", &Ellipsoid::implicit_value, py::arg("point"), "< 0 inside, 0 on the surface, > 0 outside.");
+      .def("implicit_value", &Ellipsoid::implicit_value, py::arg("point"),
+           "< 0 inside, 0 on the surface, > 0 outside.");
 
   py::class_<ContactGeometry>(module, "ContactGeometry", "Common-normal contact geometry of two bodies.")
       .def_readonly("point", &ContactGeometry::point)
@@ -120,7 +123,9 @@ void bind_geometry(py::module_& module) {
       "Common-normal narrow phase of two ellipsoids: status, geometry (point, normal, overlap, curvatures, alpha).");
 
   py::class_<Plane>(module, "Plane", "A wall: a point and the unit normal into the particles' half-space.")
-      .def(py::init([](const Eigen::Vector3d& point, const Eigen::Vector3d& normal) { return Plane{point, normal}; }),
+      .def(py::init([](const Eigen::Vector3d& point, const Eigen::Vector3d& normal) {
+             return Plane{point, normal};
+           }),
            py::arg("point"), py::arg("normal"))
       .def_readwrite("point", &Plane::point)
       .def_readwrite("normal", &Plane::normal);

@@ -40,7 +40,8 @@ struct PatchArrays {
   py::array peak_pressure;
 };
 
-PathResult evaluate_along_path_arrays(const Contact& contact, const py::handle& overlaps_in, double initial_max_overlap) {
+PathResult evaluate_along_path_arrays(const Contact& contact, const py::handle& overlaps_in,
+                                      double initial_max_overlap) {
   const DoubleArray overlaps = vector_argument(overlaps_in, "overlaps");
   const py::ssize_t size = overlaps.size();
   auto force = new_vector<double>(size);
@@ -127,13 +128,16 @@ void bind_law(py::module_& module) {
            "lambda_max(R_e/r^), eq. (52); accepts a number or an array.")
       .def("epsilon_max", py::vectorize(&TransitionFit::epsilon_max), py::arg("radius_ratio"),
            "epsilon_max(R_e/r^), eq. (52); accepts a number or an array.")
-      .def("as_dict", [](const TransitionFit& f) {
-        py::dict d;
-        d["m"] = f.lambda_amplitude, d["o"] = f.lambda_rate, d["p"] = f.lambda_offset;
-        d["s"] = f.epsilon_amplitude, d["t"] = f.epsilon_rate, d["u"] = f.epsilon_offset;
-        d["n"] = f.transition_exponent;
-        return d;
-      }, "The constants keyed like the [model] table: m, o, p, s, t, u, n.")
+      .def(
+          "as_dict",
+          [](const TransitionFit& f) {
+            py::dict d;
+            d["m"] = f.lambda_amplitude, d["o"] = f.lambda_rate, d["p"] = f.lambda_offset;
+            d["s"] = f.epsilon_amplitude, d["t"] = f.epsilon_rate, d["u"] = f.epsilon_offset;
+            d["n"] = f.transition_exponent;
+            return d;
+          },
+          "The constants keyed like the [model] table: m, o, p, s, t, u, n.")
       .def("__repr__", [](const TransitionFit& f) {
         return py::str("TransitionFit(m={!r}, o={!r}, p={!r}, s={!r}, t={!r}, u={!r}, n={!r})")
             .format(f.lambda_amplitude, f.lambda_rate, f.lambda_offset, f.epsilon_amplitude, f.epsilon_rate,
@@ -171,11 +175,13 @@ void bind_law(py::module_& module) {
       .def_readonly("transition_exponent", &ContactConstants::transition_exponent)
       .def_readonly("yield_pressure_factor", &ContactConstants::yield_pressure_factor)
       .def_readonly("plastic_limit_overlap", &ContactConstants::plastic_limit_overlap)
-      .def("validation_error", [](const ContactConstants& c) { return validation_error(c); },
-           "Empty string when the law can be evaluated with these constants, else the reason.")
+      .def(
+          "validation_error", [](const ContactConstants& c) { return validation_error(c); },
+          "Empty string when the law can be evaluated with these constants, else the reason.")
       .def("__repr__", [](const ContactConstants& c) {
-        return py::str("ContactConstants(equivalent_radius={:.6g}, yield_overlap={:.6g}, yield_force={:.6g}, "
-                       "lambda_max={:.6g}, epsilon_max={:.6g}, plastic_limit_overlap={:.6g})")
+        return py::str(
+                   "ContactConstants(equivalent_radius={:.6g}, yield_overlap={:.6g}, yield_force={:.6g}, "
+                   "lambda_max={:.6g}, epsilon_max={:.6g}, plastic_limit_overlap={:.6g})")
             .format(c.equivalent_radius, c.yield_overlap, c.yield_force, c.lambda_max, c.epsilon_max,
                     c.plastic_limit_overlap);
       });
@@ -209,7 +215,8 @@ void bind_law(py::module_& module) {
              py::arg("max_overlap") = 0.0,
              "The law at one overlap given the history max_overlap (delta_*); returns force, new delta_*, regime.");
 
-  py::class_<UnloadingBranch>(module, "UnloadingBranch", "The unloading branch derived from a history delta_* > delta_Y.")
+  py::class_<UnloadingBranch>(module, "UnloadingBranch",
+                              "The unloading branch derived from a history delta_* > delta_Y.")
       .def_readonly("loading_force", &UnloadingBranch::loading_force)
       .def_readonly("fully_plastic_force", &UnloadingBranch::fully_plastic_force)
       .def_readonly("hertz_force", &UnloadingBranch::hertz_force)
@@ -236,7 +243,8 @@ void bind_law(py::module_& module) {
   py::class_<PathResult>(module, "PathResult", "The law along an overlap path: numpy arrays, one entry per overlap.")
       .def_readonly("force", &PathResult::force, "Normal force (µN).")
       .def_readonly("max_overlap", &PathResult::max_overlap, "History delta_* after each point.")
-      .def_readonly("plastic_overlap", &PathResult::plastic_overlap, "delta_p of eq. (34) for that history (0 if elastic).")
+      .def_readonly("plastic_overlap", &PathResult::plastic_overlap,
+                    "delta_p of eq. (34) for that history (0 if elastic).")
       .def_readonly("regime", &PathResult::regime, "Regime codes (uint8, ellc.Regime values).");
   py::class_<PatchArrays>(module, "PatchArrays", "Contact patches along an overlap path: numpy arrays.")
       .def_readonly("semi_axis_major", &PatchArrays::semi_axis_major)
@@ -272,9 +280,8 @@ void bind_law(py::module_& module) {
           },
           py::arg("case"), "The contact of a case file read by read_curve_case (its [model] applies).")
       .def_readonly("constants", &Contact::constants)
-      .def("__repr__", [](const Contact& contact) {
-        return "Contact(" + std::string(py::repr(py::cast(contact.constants))) + ")";
-      })
+      .def("__repr__",
+           [](const Contact& contact) { return "Contact(" + std::string(py::repr(py::cast(contact.constants))) + ")"; })
       // Python keeps the name evaluate_path; in C++ it is evaluate_along_path (ellc/law/law_along_path.hpp).
       .def("evaluate_path", &evaluate_along_path_arrays, py::arg("overlaps"), py::arg("initial_max_overlap") = 0.0,
            "The law along a 1-D array of overlaps, carrying delta_* from point to point (history kept through "
@@ -304,7 +311,8 @@ void bind_law(py::module_& module) {
       .def("patches", &patch_arrays, py::arg("overlaps"), py::arg("initial_max_overlap") = 0.0,
            "Contact ellipse and pressure along the path (see contact_patch).")
       .def(
-          "patch", [](const Contact& contact, double overlap, double max_overlap) {
+          "patch",
+          [](const Contact& contact, double overlap, double max_overlap) {
             return contact_patch(contact.constants, overlap, max_overlap);
           },
           py::arg("overlap"), py::arg("max_overlap") = 0.0, "contact_patch at one point.")

@@ -52,7 +52,9 @@ void bind_material_and_hertz(py::module_& module) {
 
   py::class_<PrincipalCurvatures>(module, "PrincipalCurvatures",
                                   "Principal curvatures (1/µm) of one body at the contact point; a wall has 0.")
-      .def(py::init([](double kappa_1, double kappa_2) { return PrincipalCurvatures{kappa_1, kappa_2}; }),
+      .def(py::init([](double kappa_1, double kappa_2) {
+             return PrincipalCurvatures{kappa_1, kappa_2};
+           }),
            py::arg("kappa_1"), py::arg("kappa_2"))
       .def_readwrite("kappa_1", &PrincipalCurvatures::kappa_1)
       .def_readwrite("kappa_2", &PrincipalCurvatures::kappa_2)
@@ -62,8 +64,10 @@ void bind_material_and_hertz(py::module_& module) {
       });
 
   py::class_<RelativeCurvature>(module, "RelativeCurvature", "A and B of eq. (5), B >= A.")
-      .def(py::init([](double a_sum, double b_sum) { return RelativeCurvature{a_sum, b_sum}; }), py::arg("a_sum"),
-           py::arg("b_sum"))
+      .def(py::init([](double a_sum, double b_sum) {
+             return RelativeCurvature{a_sum, b_sum};
+           }),
+           py::arg("a_sum"), py::arg("b_sum"))
       .def_readwrite("a_sum", &RelativeCurvature::a_sum)
       .def_readwrite("b_sum", &RelativeCurvature::b_sum);
   module.def("relative_curvature", &relative_curvature, py::arg("body_i"), py::arg("body_j"), py::arg("alpha"),
@@ -136,8 +140,8 @@ void bind_material_and_hertz(py::module_& module) {
         {
           py::gil_scoped_release release;
           for (py::ssize_t index = 0; index < xs.size(); ++index)
-            out[index] = hertz_pressure(semi_axis_major, semi_axis_minor, peak_pressure, xs.data()[index],
-                                        ys.data()[index]);
+            out[index] =
+                hertz_pressure(semi_axis_major, semi_axis_minor, peak_pressure, xs.data()[index], ys.data()[index]);
         }
         return pressures;
       },

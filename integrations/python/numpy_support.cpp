@@ -16,8 +16,9 @@ std::string describe_shape(const py::array& array) {
 
 DoubleArray vector_argument(const py::handle& value, const char* name) {
   py::array array = py::array::ensure(value);
-  if (!array) throw py::value_error(std::string(name) + ": expected a 1-D array of float64, got " +
-                                    std::string(py::str(py::type::of(value).attr("__name__"))));
+  if (!array)
+    throw py::value_error(std::string(name) + ": expected a 1-D array of float64, got " +
+                          std::string(py::str(py::type::of(value).attr("__name__"))));
   const char kind = array.dtype().kind();
   if (kind != 'f' && kind != 'i' && kind != 'u')
     throw py::value_error(std::string(name) + ": expected a real numeric dtype (float64), got dtype('" +

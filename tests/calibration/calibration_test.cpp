@@ -92,8 +92,8 @@ TEST(Calibration, UnloadingPointsAreNotPartOfTheProfile) {
   EXPECT_EQ(lambda_profile(constants, data.overlaps, data.forces).size(), before.size());
   // Eq. (51) on the law's own forces is the law's λ.
   for (const LambdaSample& sample : before)
-    EXPECT_NEAR(sample.lambda, transition_lambda(constants, sample.contact_radius_ratio * constants.yield_contact_radius),
-                1e-9);
+    EXPECT_NEAR(sample.lambda,
+                transition_lambda(constants, sample.contact_radius_ratio * constants.yield_contact_radius), 1e-9);
 }
 
 TEST(Calibration, ModelTableReadsBackAsTheModel) {

@@ -2,12 +2,12 @@
 // every waypoint and reproduces the library's numbers.
 #include <gtest/gtest.h>
 
+#include <sys/wait.h>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
-#include <sys/wait.h>
 
 #include "ellc/cases/case_file.hpp"
 
@@ -118,7 +118,7 @@ TEST_F(CurveCli, MissingFileIsAnInputError) {
 
 TEST_F(CurveCli, AspectOutsideTheCalibratedRangeWarnsOnceAndRuns) {
   const CliRun run = run_cli("curve " + variant("aspect = [1.0, 1.0, 0.8]", "aspect = [1.0, 2.5, 0.8]") + " -o " +
-                          (dir / "out.csv").string());
+                             (dir / "out.csv").string());
   EXPECT_EQ(run.exit_code, 0) << run.output;
   std::size_t count = 0;
   for (std::size_t at = run.output.find("warning"); at != std::string::npos; at = run.output.find("warning", at + 1))
@@ -159,7 +159,8 @@ TEST_F(CurveCli, CsvVisitsEveryWaypointAndMatchesTheLibrary) {
 
 TEST_F(CurveCli, ShippedPaperCasesRun) {
   for (const char* name : {"paper_case1.toml", "paper_case2.toml"}) {
-    const CliRun run = run_cli(std::string("curve ") + ELLC_EXAMPLES_DIR + "/" + name + " -o " + (dir / "p.csv").string());
+    const CliRun run =
+        run_cli(std::string("curve ") + ELLC_EXAMPLES_DIR + "/" + name + " -o " + (dir / "p.csv").string());
     EXPECT_EQ(run.exit_code, 0) << run.output;
     EXPECT_EQ(run.output.find("warning"), std::string::npos) << run.output;
   }

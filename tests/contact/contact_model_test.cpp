@@ -86,7 +86,7 @@ TEST(ContactModel, TangentialStiffnessIsMindlinOrTheRatioOfTheNormalOne) {
     const double law = evaluate_contact(constants, overlap, 0.0).force;
     const Eigen::Vector3d force = contact_force(context, constants, overlap, law, kinematics, dt, history).on_j;
     EXPECT_NEAR(history.spring().y(), slide * dt, 1e-18);  // stuck: the spring took the whole motion
-    return -force.y() / (slide * dt);                       // k_t
+    return -force.y() / (slide * dt);                      // k_t
   };
   const double c_c = std::sqrt(constants.contact_radius_sq_per_overlap * overlap);
   const double shear = kNmc.youngs_modulus / (2.0 * (1.0 + kNmc.poisson_ratio));
@@ -104,8 +104,8 @@ TEST(ContactModel, HertzNormalModelNeverYields) {
   const InteractionContext hertz = make_interaction(model, kNmc, kNmc);
   const InteractionContext plastic = make_interaction(ContactModel{}, kNmc, kNmc);
   EXPECT_EQ(plastic.material.yield_stress, kNmc.yield_stress);
-  const ContactConstants constants = make_contact_constants(hertz.material, {0.2, 0.2}, {0.2, 0.2}, 0.0, 10.0,
-                                                            HertzMode::hale);
+  const ContactConstants constants =
+      make_contact_constants(hertz.material, {0.2, 0.2}, {0.2, 0.2}, 0.0, 10.0, HertzMode::hale);
   EXPECT_EQ(evaluate_contact(constants, 2.0, 0.0).regime, Regime::elastic);  // 40 % of R_e, still Hertz
 }
 

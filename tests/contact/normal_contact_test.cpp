@@ -43,7 +43,8 @@ TEST(NormalContactWiring, SeparatedGeometryGivesNoForce) {
   geometry.curvature_i = SurfaceCurvature{1.0, 1.0};
   geometry.curvature_j = SurfaceCurvature{1.0, 1.0};
   geometry.relative = {1.0, 1.0};
-  const NormalContact contact = normal_contact(geometry, ContactMaterial{1e5, 1e3}, 2.0, HertzMode::hale, LawParameters{}, 0.0);
+  const NormalContact contact =
+      normal_contact(geometry, ContactMaterial{1e5, 1e3}, 2.0, HertzMode::hale, LawParameters{}, 0.0);
   EXPECT_EQ(contact.law.force, 0.0);
   EXPECT_EQ(contact.law.regime, Regime::separated);
   EXPECT_EQ(contact.force_on_j, Eigen::Vector3d::Zero());

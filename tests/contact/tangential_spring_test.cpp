@@ -192,7 +192,7 @@ TEST(TangentialSpring, ClosedStickCycleReturnsTheSpringToZero) {
 
   const double slip_work = cycle(20.0, spring, slid);  // μ F_n = 10: slides on every leg
   ASSERT_TRUE(slid);
-  EXPECT_GT(spring.norm(), 0.0);  // a slid contact keeps a set
+  EXPECT_GT(spring.norm(), 0.0);      // a slid contact keeps a set
   EXPECT_LT(slip_work, -10.0 * 0.2);  // dissipates at least μ F_n over half of the 0.4 travelled
 }
 

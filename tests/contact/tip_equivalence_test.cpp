@@ -9,8 +9,8 @@
 #include <numbers>
 #include <vector>
 
-#include "ellc/geometry/narrow_phase.hpp"
 #include "ellc/contact/normal_contact.hpp"
+#include "ellc/geometry/narrow_phase.hpp"
 #include "ellc/geometry/tip_contact.hpp"
 #include "support/geometry_support.hpp"
 #include "support/nmc.hpp"
@@ -23,7 +23,9 @@ constexpr double kDegree = std::numbers::pi / 180.0;
 
 using test::kNmc;
 
-Eigen::Vector3d from_aspect(const Eigen::Vector3d& aspect, double mean) { return aspect * (mean / std::cbrt(aspect.prod())); }
+Eigen::Vector3d from_aspect(const Eigen::Vector3d& aspect, double mean) {
+  return aspect * (mean / std::cbrt(aspect.prod()));
+}
 
 struct TipCase {
   Eigen::Vector3d axes_i;
@@ -162,7 +164,8 @@ TEST(TipEquivalence, AlphaIsTheTwistDifference) {
   const Eigen::Vector3d axes_i(4.0, 5.0, 6.0);
   const Eigen::Vector3d axes_j(4.0, 2.0, 3.2);
   for (const double twist : {0.0, 10.0, 45.0, 80.0, 90.0}) {
-    const Ellipsoid i(axes_i, {Eigen::Vector3d::Zero(), Eigen::Quaterniond(Eigen::AngleAxisd(twist * kDegree, Eigen::Vector3d::UnitX()))});
+    const Ellipsoid i(axes_i, {Eigen::Vector3d::Zero(),
+                               Eigen::Quaterniond(Eigen::AngleAxisd(twist * kDegree, Eigen::Vector3d::UnitX()))});
     const Ellipsoid j(axes_j, {Eigen::Vector3d(7.9, 0, 0), Eigen::Quaterniond::Identity()});
     const NarrowPhaseResult result = ellipsoid_contact(i, j);
     ASSERT_EQ(result.status, NarrowPhaseStatus::contact);

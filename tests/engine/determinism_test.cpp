@@ -35,7 +35,8 @@ CollidingResult run_colliding(const CollidingRun& run) {
   ParticleSet particles;
   for (std::size_t slot = 0; slot < ellipsoids.size(); ++slot) {
     const Eigen::Vector3d& axes = ellipsoids.semi_axes[slot];
-    particles.add(ellipsoids.id[slot], run.some_spheres && slot % 3 == 0 ? Eigen::Vector3d::Constant(axes.minCoeff()) : axes,
+    particles.add(ellipsoids.id[slot],
+                  run.some_spheres && slot % 3 == 0 ? Eigen::Vector3d::Constant(axes.minCoeff()) : axes,
                   testing::kScaledDensity, ellipsoids.position[slot], ellipsoids.orientation[slot]);
     particles.velocity[slot] = ellipsoids.velocity[slot];
   }

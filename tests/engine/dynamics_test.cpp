@@ -4,11 +4,11 @@
 
 #include <cmath>
 
-#include "ellc/scenario/random.hpp"
 #include "ellc/engine/rigid_body.hpp"
 #include "ellc/engine/time_step.hpp"
 #include "ellc/geometry/narrow_phase.hpp"
 #include "ellc/law/contact_constants.hpp"
+#include "ellc/scenario/random.hpp"
 #include "engine_support.hpp"
 
 namespace ellc::engine {
@@ -24,7 +24,8 @@ using testing::kScaledDensity;
 TEST(RigidBody, OrientationStepIsTheExactRotation) {
   Random random(5);
   for (int sample = 0; sample < 2000; ++sample) {
-    const Eigen::Vector3d axis = Eigen::Vector3d(random.uniform(-1, 1), random.uniform(-1, 1), random.uniform(-1, 1)).normalized();
+    const Eigen::Vector3d axis =
+        Eigen::Vector3d(random.uniform(-1, 1), random.uniform(-1, 1), random.uniform(-1, 1)).normalized();
     const double angle = std::pow(10.0, random.uniform(-9.0, -0.5));  // 10⁻⁹ … 0.3 rad in one step
     const double dt = random.uniform(0.01, 1.0);
     const Eigen::Quaterniond start(Eigen::AngleAxisd(random.uniform(0, 6.3), Eigen::Vector3d::UnitZ()) *
@@ -90,7 +91,8 @@ TEST(EngineDynamics, RestitutionMatchesThornton1997) {
       make_contact_constants(mix(kNmc, kNmc), {1 / radius, 1 / radius}, {1 / radius, 1 / radius}, 0.0, 2 * radius,
                              HertzMode::hale, base.contact.model.law);
   ParticleSet probe;
-  probe.add(0, Eigen::Vector3d::Constant(radius), kScaledDensity, Eigen::Vector3d::Zero(), Eigen::Quaterniond::Identity());
+  probe.add(0, Eigen::Vector3d::Constant(radius), kScaledDensity, Eigen::Vector3d::Zero(),
+            Eigen::Quaterniond::Identity());
   const double reduced_mass = 0.5 * probe.mass[0];
   const double yield_speed =
       std::sqrt(2.0 * 0.4 * constants.hertz_coefficient * std::pow(constants.yield_overlap, 2.5) / reduced_mass);
@@ -99,8 +101,8 @@ TEST(EngineDynamics, RestitutionMatchesThornton1997) {
     ParticleSet particles;
     particles.add(0, Eigen::Vector3d::Constant(radius), kScaledDensity, Eigen::Vector3d(100, 100, 100),
                   Eigen::Quaterniond::Identity());
-    particles.add(1, Eigen::Vector3d::Constant(radius), kScaledDensity, Eigen::Vector3d(100, 100, 100 + 2 * radius + 1e-3),
-                  Eigen::Quaterniond::Identity());
+    particles.add(1, Eigen::Vector3d::Constant(radius), kScaledDensity,
+                  Eigen::Vector3d(100, 100, 100 + 2 * radius + 1e-3), Eigen::Quaterniond::Identity());
     particles.velocity[0] = Eigen::Vector3d(0, 0, 0.5 * speed);
     particles.velocity[1] = Eigen::Vector3d(0, 0, -0.5 * speed);
     EngineSettings settings = base;
@@ -175,7 +177,8 @@ TEST(EngineDynamics, MomentumIsConserved) {
     return total;
   };
   double scale = 0.0;
-  for (std::size_t slot = 0; slot < particles.size(); ++slot) scale += particles.mass[slot] * particles.velocity[slot].norm();
+  for (std::size_t slot = 0; slot < particles.size(); ++slot)
+    scale += particles.mass[slot] * particles.velocity[slot].norm();
   const Eigen::Vector3d initial = momentum(particles);
   Simulation sim(settings, particles, {Wall{-1e4, 0.0, 1, {}}, Wall{1e4, 0.0, -1, {}}});
   std::size_t contacts_seen = 0;

@@ -72,10 +72,11 @@ TEST(EngineEnergyBalance, WallWorkEqualsStoredPlusDissipatedEnergy) {
         << "plate " << b.plate_work << " kinetic " << b.kinetic << " law " << b.law_elastic << " spring " << b.spring
         << " plastic " << b.plastic << " damping " << b.damping << " friction " << b.friction;
   }
-  std::printf("energy [pJ] at release: plate %.6g = kinetic %.4g + law %.4g + spring %.4g + plastic %.4g + damping "
-              "%.4g + friction %.4g; residual %.3g (%.2g of the plate work)\n",
-              released.plate_work, released.kinetic, released.law_elastic, released.spring, released.plastic,
-              released.damping, released.friction, released.residual(), released.residual() / released.plate_work);
+  std::printf(
+      "energy [pJ] at release: plate %.6g = kinetic %.4g + law %.4g + spring %.4g + plastic %.4g + damping "
+      "%.4g + friction %.4g; residual %.3g (%.2g of the plate work)\n",
+      released.plate_work, released.kinetic, released.law_elastic, released.spring, released.plastic, released.damping,
+      released.friction, released.residual(), released.residual() / released.plate_work);
 }
 
 }  // namespace

@@ -3,8 +3,8 @@
 
 #include <gtest/gtest.h>
 
-#include "ellc/engine/broad_phase.hpp"
 #include "ellc/contact/contact_energy.hpp"
+#include "ellc/engine/broad_phase.hpp"
 #include "ellc/scenario/random.hpp"
 #include "support/nmc.hpp"
 
@@ -42,7 +42,7 @@ TEST(EnginePairMap, PeriodicPairKeyedByIds) {
 TEST(EnginePairMap, HistorySurvivesRebuildAndReordering) {
   const Box box{20.0, 20.0};
   auto before = find_candidate_pairs(three_spheres(false), box, 0.1);
-  before[0].history.max_overlap = 0.25;  // active: δ_* > 0
+  before[0].history.max_overlap = 0.25;                              // active: δ_* > 0
   auto after = find_candidate_pairs(three_spheres(true), box, 0.1);  // slots reversed
   ASSERT_EQ(after.size(), 1U);
   EXPECT_EQ(after[0].key, pair_key(0, 1));
@@ -94,7 +94,8 @@ TEST(EnginePairMap, CellListEqualsBruteForceSortedByKey) {
       const Eigen::Vector3d d(image(raw.x(), box.lx), image(raw.y(), box.ly), raw.z());
       const double reach = particles.bounding_radius[a] + particles.bounding_radius[b] + skin;
       if (d.squaredNorm() < reach * reach)
-        expected.push_back(pair_key(std::min(particles.id[a], particles.id[b]), std::max(particles.id[a], particles.id[b])));
+        expected.push_back(
+            pair_key(std::min(particles.id[a], particles.id[b]), std::max(particles.id[a], particles.id[b])));
     }
   std::sort(expected.begin(), expected.end());
   ASSERT_GT(expected.size(), 100U);

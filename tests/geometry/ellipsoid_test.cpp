@@ -88,7 +88,8 @@ TEST(Ellipsoid, CurvaturesMatchFiniteDifferencesOfTheSurface) {
     for (int step = 0; step < 12; ++step) {  // Euler: κ(θ) = κ1 cos²θ + κ2 sin²θ
       const double theta = step * std::numbers::pi / 12.0;
       const Eigen::Vector3d t = std::cos(theta) * c.direction_1 + std::sin(theta) * c.direction_2;
-      const double expected = c.kappa_1 * std::cos(theta) * std::cos(theta) + c.kappa_2 * std::sin(theta) * std::sin(theta);
+      const double expected =
+          c.kappa_1 * std::cos(theta) * std::cos(theta) + c.kappa_2 * std::sin(theta) * std::sin(theta);
       EXPECT_NEAR(normal_section_curvature(body, p, n, t, h), expected, 1e-7 * c.kappa_1) << "theta " << theta;
     }
     // The normal-only path gives the same.
@@ -114,7 +115,8 @@ TEST(Ellipsoid, TipCurvaturesAreTheClosedForm) {
 
 TEST(Ellipsoid, UmbilicsGiveFiniteDeterministicDirections) {
   // Spheroid b = c: the x tips are umbilics. So is every point of a sphere.
-  const Ellipsoid spheroid(Eigen::Vector3d(2.0, 1.0, 1.0), {Eigen::Vector3d(1, 2, 3), Eigen::Quaterniond(0.3, 0.1, -0.5, 0.2)});
+  const Ellipsoid spheroid(Eigen::Vector3d(2.0, 1.0, 1.0),
+                           {Eigen::Vector3d(1, 2, 3), Eigen::Quaterniond(0.3, 0.1, -0.5, 0.2)});
   const Eigen::Vector3d tip = spheroid.rotation().col(0);
   const SurfaceCurvature c = spheroid.curvature_with_normal(tip);
   EXPECT_TRUE(c.umbilic());
@@ -177,7 +179,8 @@ TEST(Ellipsoid, InvalidDataIsFlagged) {
   EXPECT_FALSE(Ellipsoid(Eigen::Vector3d(1, -2, 3)).valid());
   EXPECT_FALSE(Ellipsoid(Eigen::Vector3d(1, std::nan(""), 3)).valid());
   EXPECT_FALSE(Ellipsoid(Eigen::Vector3d(1, 2, 3), {Eigen::Vector3d::Zero(), Eigen::Quaterniond(0, 0, 0, 0)}).valid());
-  EXPECT_FALSE(Ellipsoid(Eigen::Vector3d(1, 2, 3), {Eigen::Vector3d(0, INFINITY, 0), Eigen::Quaterniond::Identity()}).valid());
+  EXPECT_FALSE(
+      Ellipsoid(Eigen::Vector3d(1, 2, 3), {Eigen::Vector3d(0, INFINITY, 0), Eigen::Quaterniond::Identity()}).valid());
   // A non-unit quaternion is normalised.
   const Ellipsoid scaled(Eigen::Vector3d(1, 2, 3), {Eigen::Vector3d::Zero(), Eigen::Quaterniond(2, 0, 0, 0)});
   EXPECT_TRUE(scaled.valid());

@@ -69,7 +69,8 @@ TEST(NarrowPhase, RecoversAConstructedCommonNormal) {
     const Ellipsoid i(test::random_semi_axes(rng, 1.0), {Eigen::Vector3d::Zero(), test::random_orientation(rng)});
     const Eigen::Vector3d n = test::random_unit(rng);
     const double overlap = test::uniform(rng, 0.0, 0.05);  // small: the constructed normal is the minimum
-    const Ellipsoid j = test::place_partner(i, test::random_semi_axes(rng, 1.0), test::random_orientation(rng), n, overlap);
+    const Ellipsoid j =
+        test::place_partner(i, test::random_semi_axes(rng, 1.0), test::random_orientation(rng), n, overlap);
     const NarrowPhaseResult result = ellipsoid_contact(i, j);
     ASSERT_EQ(result.status, NarrowPhaseStatus::contact);
     expect_finite(result);
@@ -107,9 +108,11 @@ TEST(NarrowPhase, InvariantUnderARigidMotionOfBothBodies) {
   for (int sample = 0; sample < 500; ++sample) {
     const Pair pair = random_pair(rng, test::uniform(rng, 0.0, 0.15));
     const Eigen::Quaterniond rotation = test::random_orientation(rng);
-    const Eigen::Vector3d translation(test::uniform(rng, -10, 10), test::uniform(rng, -10, 10), test::uniform(rng, -10, 10));
+    const Eigen::Vector3d translation(test::uniform(rng, -10, 10), test::uniform(rng, -10, 10),
+                                      test::uniform(rng, -10, 10));
     const NarrowPhaseResult a = ellipsoid_contact(pair.i, pair.j);
-    const NarrowPhaseResult b = ellipsoid_contact(moved(pair.i, rotation, translation), moved(pair.j, rotation, translation));
+    const NarrowPhaseResult b =
+        ellipsoid_contact(moved(pair.i, rotation, translation), moved(pair.j, rotation, translation));
     ASSERT_EQ(a.status, NarrowPhaseStatus::contact);
     ASSERT_EQ(b.status, NarrowPhaseStatus::contact);
     const Eigen::Matrix3d r = rotation.toRotationMatrix();
@@ -186,7 +189,8 @@ TEST(NarrowPhase, SeparatedPairsGiveASeparatingAxis) {
     ASSERT_EQ(result.status, NarrowPhaseStatus::separated);
     expect_finite(result);
     const Eigen::Vector3d& n = result.geometry.normal;
-    const double reach = pair.i.support_radius(n) + pair.j.support_radius(-n) - n.dot(pair.j.center() - pair.i.center());
+    const double reach =
+        pair.i.support_radius(n) + pair.j.support_radius(-n) - n.dot(pair.j.center() - pair.i.center());
     EXPECT_LT(reach, 0.0);
     EXPECT_NEAR(result.geometry.overlap, reach, 1e-12);
     EXPECT_GE(result.geometry.overlap, -gap - 1e-12);  // the gap is the distance: |overlap| ≤ it

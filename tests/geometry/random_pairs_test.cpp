@@ -38,8 +38,10 @@ struct Sample {
 Eigen::Quaterniond flat_side_towards(Rng& rng, const Eigen::Vector3d& semi_axes, const Eigen::Vector3d& direction) {
   Eigen::Index thinnest = 0;
   semi_axes.minCoeff(&thinnest);
-  const Eigen::Quaterniond twist(Eigen::AngleAxisd(test::uniform(rng, 0.0, 2.0 * std::numbers::pi), Eigen::Vector3d::Unit(static_cast<int>(thinnest))));
-  const Eigen::Quaterniond tilt(Eigen::AngleAxisd(test::uniform(rng, 0.0, 2.0) * std::numbers::pi / 180.0, test::random_unit(rng)));
+  const Eigen::Quaterniond twist(Eigen::AngleAxisd(test::uniform(rng, 0.0, 2.0 * std::numbers::pi),
+                                                   Eigen::Vector3d::Unit(static_cast<int>(thinnest))));
+  const Eigen::Quaterniond tilt(
+      Eigen::AngleAxisd(test::uniform(rng, 0.0, 2.0) * std::numbers::pi / 180.0, test::random_unit(rng)));
   return tilt * test::align_axis(static_cast<int>(thinnest), direction) * twist;
 }
 
@@ -51,7 +53,10 @@ Sample make_sample(Rng& rng, long index) {
   const Eigen::Vector3d axes_j = test::random_semi_axes(rng, mean_j);
   const Eigen::Vector3d n = test::random_unit(rng);
   const long slot = index % 20;
-  const Kind kind = slot < 14 ? Kind::generic : slot < 16 ? Kind::grazing : slot < 18 ? Kind::flat_sides : Kind::separated;
+  const Kind kind = slot < 14   ? Kind::generic
+                    : slot < 16 ? Kind::grazing
+                    : slot < 18 ? Kind::flat_sides
+                                : Kind::separated;
   double overlap = 0.0;
   Eigen::Quaterniond orientation_i = test::random_orientation(rng);
   Eigen::Quaterniond orientation_j = test::random_orientation(rng);
@@ -65,7 +70,8 @@ Sample make_sample(Rng& rng, long index) {
       break;
     case Kind::separated: overlap = -test::uniform(rng, 0.0, 0.2) * scale; break;
   }
-  const Eigen::Vector3d centre(test::uniform(rng, -100, 100), test::uniform(rng, -100, 100), test::uniform(rng, -100, 100));
+  const Eigen::Vector3d centre(test::uniform(rng, -100, 100), test::uniform(rng, -100, 100),
+                               test::uniform(rng, -100, 100));
   const Ellipsoid i(axes_i, {centre, orientation_i});
   return {i, test::place_partner(i, axes_j, orientation_j, n, overlap), n, overlap, scale, kind};
 }
@@ -161,9 +167,10 @@ TEST(RandomPairs, MillionPairsNoNanNoSilentFailure) {
               100.0 * static_cast<double>(recovered) / static_cast<double>(overlapping_samples));
   std::printf("[ random pairs ] mean Newton steps %.3f, max %ld; warm re-solves %ld, mismatches %ld\n",
               static_cast<double>(newton_steps) / static_cast<double>(kPairs), max_steps, warm_checked, warm_mismatch);
-  std::printf("[ random pairs ] %.0f ns per cold call (incl. timer)\n", 1e9 * solve_seconds / static_cast<double>(kPairs));
+  std::printf("[ random pairs ] %.0f ns per cold call (incl. timer)\n",
+              1e9 * solve_seconds / static_cast<double>(kPairs));
   EXPECT_EQ(non_finite, 0);
-  EXPECT_EQ(unverified, 0);    // nothing unreported: every non-failed result checks out
+  EXPECT_EQ(unverified, 0);  // nothing unreported: every non-failed result checks out
   EXPECT_EQ(wrong_status, 0);
   EXPECT_EQ(warm_mismatch, 0);
   EXPECT_GE(accepted, 0.9999);

@@ -16,8 +16,10 @@ TEST(WallContact, SphereOnAPlaneIsExact) {
     const Eigen::Vector3d up = test::random_unit(rng);
     const Plane wall{Eigen::Vector3d(1, 2, 3), up};
     const double overlap = test::uniform(rng, -0.2, 0.2) * radius;
-    const Eigen::Vector3d centre = wall.point + (radius - overlap) * up + test::uniform(rng, -5, 5) * up.unitOrthogonal();
-    const NarrowPhaseResult result = wall_contact(Ellipsoid(Eigen::Vector3d::Constant(radius), {centre, test::random_orientation(rng)}), wall);
+    const Eigen::Vector3d centre =
+        wall.point + (radius - overlap) * up + test::uniform(rng, -5, 5) * up.unitOrthogonal();
+    const NarrowPhaseResult result =
+        wall_contact(Ellipsoid(Eigen::Vector3d::Constant(radius), {centre, test::random_orientation(rng)}), wall);
     EXPECT_NEAR(result.geometry.overlap, overlap, 1e-14 * (1.0 + centre.norm()));
     EXPECT_LT((result.geometry.normal + up).norm(), 1e-15);
     EXPECT_NEAR((result.geometry.surface_point_j - wall.point).dot(up), 0.0, 1e-14 * (1.0 + centre.norm()));
@@ -35,11 +37,13 @@ TEST(WallContact, SphereOnAPlaneIsExact) {
 
 TEST(WallContact, BadWallFails) {
   const Ellipsoid body(Eigen::Vector3d(1, 1, 1));
-  EXPECT_EQ(wall_contact(body, Plane{Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero()}).status, NarrowPhaseStatus::failed);
+  EXPECT_EQ(wall_contact(body, Plane{Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero()}).status,
+            NarrowPhaseStatus::failed);
   EXPECT_EQ(wall_contact(body, Plane{Eigen::Vector3d(NAN, 0, 0), Eigen::Vector3d::UnitZ()}).status,
             NarrowPhaseStatus::failed);
   // A non-unit wall normal is normalised.
-  const NarrowPhaseResult scaled = wall_contact(body, Plane{Eigen::Vector3d(0, 0, -0.9), 5.0 * Eigen::Vector3d::UnitZ()});
+  const NarrowPhaseResult scaled =
+      wall_contact(body, Plane{Eigen::Vector3d(0, 0, -0.9), 5.0 * Eigen::Vector3d::UnitZ()});
   ASSERT_EQ(scaled.status, NarrowPhaseStatus::contact);
   EXPECT_NEAR(scaled.geometry.overlap, 0.1, 1e-15);
 }

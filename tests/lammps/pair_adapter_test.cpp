@@ -74,8 +74,8 @@ TEST(PairCoefficients, RefusesToMixDifferentLawParameters) {
 }
 
 TEST(PairCoefficients, SerializationRoundTrips) {
-  const auto c = parse_coefficients(nmc_pair_coeff({"friction", "0.3", "tangential_stiffness", "0.8", "epsilon", "8", "-6",
-                                                     "1.2", "yield_factor", "1.5"}))
+  const auto c = parse_coefficients(nmc_pair_coeff({"friction", "0.3", "tangential_stiffness", "0.8", "epsilon", "8",
+                                                    "-6", "1.2", "yield_factor", "1.5"}))
                      .coefficients;
   const auto back = TypeCoefficients::deserialize(c.serialize());
   EXPECT_EQ(back.serialize(), c.serialize());
@@ -166,8 +166,8 @@ TEST(EllipsoidPair, ConservesMomentumAndAngularMomentumInAGeneralPose) {
   EXPECT_GT(result.overlap, 0.0);
   EXPECT_GT(result.normal.dot(b.position - a.position), 0.0);  // normal points from a to b
   // Equal and opposite forces at one point: the torques about the centres balance the moment.
-  const Eigen::Vector3d moment = result.torque_on_a + result.torque_on_b +
-                                 (b.position - a.position).cross(result.force_on_b);
+  const Eigen::Vector3d moment =
+      result.torque_on_a + result.torque_on_b + (b.position - a.position).cross(result.force_on_b);
   EXPECT_LT(moment.norm(), 1e-9 * result.force_on_b.norm() * 10.0);
   // The warm start is kept for the next step, and a second evaluation from it agrees.
   EXPECT_EQ(ellc::ContactHistory::read_from(history.data()).warm_valid, 1.0);
@@ -192,8 +192,9 @@ TEST(PairCoefficients, SharedContactVocabularyAndTheOlderNames) {
   EXPECT_EQ(c.model.tangential, ellc::TangentialModel::mindlin);  // the engine's default
   const auto ratio = parse_coefficients({"142000", "0.25", "7900", "tangential_stiffness", "0.8"}).coefficients;
   EXPECT_EQ(ratio.model.tangential, ellc::TangentialModel::ratio);  // old inputs keep their meaning
-  EXPECT_NE(parse_coefficients({"1", "0.2", "3", "normal", "thornton"}).error.find("normal = thornton: expected "
-                                                                                   "becker_kamlah or hertz"),
+  EXPECT_NE(parse_coefficients({"1", "0.2", "3", "normal", "thornton"})
+                .error.find("normal = thornton: expected "
+                            "becker_kamlah or hertz"),
             std::string::npos);
   EXPECT_NE(parse_coefficients({"1", "0.2", "3", "damping_ratio", "1.5"}).error.find("damping_ratio = 1.5"),
             std::string::npos);
@@ -220,10 +221,9 @@ TEST(OneContactModel, AdapterGivesExactlyTheSharedPairForces) {
   const ellc::Ellipsoid shape_b(b.semi_axes, {b.position, b.orientation});
   for (int step = 0; step < 3; ++step) {
     ellc::ContactCache cache;
-    const ellc::PairSolution solution =
-        ellc::solve_pair({a.semi_axes, a.position, a.orientation, shape_a.mean_radius(), &shape_a},
-                         {b.semi_axes, b.position, b.orientation, shape_b.mean_radius(), &shape_b}, false, history,
-                         cache, context);
+    const ellc::PairSolution solution = ellc::solve_pair(
+        {a.semi_axes, a.position, a.orientation, shape_a.mean_radius(), &shape_a},
+        {b.semi_axes, b.position, b.orientation, shape_b.mean_radius(), &shape_b}, false, history, cache, context);
     ASSERT_EQ(solution.status, ellc::PairStatus::contact);
     shared = ellc::pair_forces(solution, a.position, {a.velocity, a.angular_velocity, a.mass}, b.position,
                                {b.velocity, b.angular_velocity, b.mass}, context, 1e-3, history);

@@ -136,15 +136,15 @@ TEST(Law, ReloadingRetracesUnloadingThenRejoinsTheEnvelope) {
   const double peak = 6.0 * c.yield_overlap;
   std::vector<double> up;  // 0 … peak
   for (int i = 0; i <= 100; ++i) up.push_back(peak * i / 100.0);
-  std::vector<double> path = up;                          // load
-  path.insert(path.end(), up.rbegin() + 1, up.rend());    // unload to 0
-  path.insert(path.end(), up.begin() + 1, up.end());      // reload to the same peak
-  path.push_back(1.2 * peak);                             // and beyond: back on the envelope
+  std::vector<double> path = up;                        // load
+  path.insert(path.end(), up.rbegin() + 1, up.rend());  // unload to 0
+  path.insert(path.end(), up.begin() + 1, up.end());    // reload to the same peak
+  path.push_back(1.2 * peak);                           // and beyond: back on the envelope
   std::vector<LawResult> results(path.size());
   evaluate_along_path(c, path, results);
   for (int i = 0; i <= 100; ++i) {
-    const auto& unload = results[100 + i];   // δ = peak (1 − i/100)
-    const auto& reload = results[300 - i];   // the same δ on the way back up
+    const auto& unload = results[100 + i];  // δ = peak (1 − i/100)
+    const auto& reload = results[300 - i];  // the same δ on the way back up
     EXPECT_EQ(path[100 + i], path[300 - i]);
     EXPECT_EQ(unload.force, reload.force) << i;
   }
@@ -184,8 +184,8 @@ TEST(Law, RandomHistoriesNeverGiveNaNOrNegativeForce) {
   for (int trial = 0; trial < 2000; ++trial) {
     const double mean = radius(rng);
     const auto c = ellc::testing::tip_constants(ellc::testing::from_aspect(aspect(rng), aspect(rng), mean),
-                                                ellc::testing::from_aspect(aspect(rng), aspect(rng), radius(rng)),
-                                                0.0, 0.0, trial % 2 ? HertzMode::exact : HertzMode::hale);
+                                                ellc::testing::from_aspect(aspect(rng), aspect(rng), radius(rng)), 0.0,
+                                                0.0, trial % 2 ? HertzMode::exact : HertzMode::hale);
     ASSERT_TRUE(validation_error(c).empty()) << validation_error(c);
     double max_overlap = 0.0;
     for (int step = 0; step < 20; ++step) {
@@ -211,8 +211,8 @@ TEST(Law, InvalidFitIsReportedByName) {
   LawParameters law;
   law.fit.lambda_offset = 0.0;  // λ_max < 1.6: pressure would fall after yield
   law.fit.lambda_amplitude = 0.1;
-  const auto c = ellc::testing::tip_constants(ellc::testing::from_aspect(1, 1, 10), ellc::testing::from_aspect(1, 1, 10),
-                                              0.0, 0.0, HertzMode::hale, law);
+  const auto c = ellc::testing::tip_constants(ellc::testing::from_aspect(1, 1, 10),
+                                              ellc::testing::from_aspect(1, 1, 10), 0.0, 0.0, HertzMode::hale, law);
   EXPECT_NE(validation_error(c).find("lambda_max"), std::string::npos);
 }
 }  // namespace

@@ -16,8 +16,8 @@ inline Eigen::Vector3d from_aspect(double b, double c, double mean) {
 }
 
 inline ContactConstants tip_constants(const Eigen::Vector3d& axes_i, const Eigen::Vector3d& axes_j,
-                                      double twist_i = 0.0, double twist_j = 0.0,
-                                      HertzMode mode = HertzMode::hale, const LawParameters& law = {}) {
+                                      double twist_i = 0.0, double twist_j = 0.0, HertzMode mode = HertzMode::hale,
+                                      const LawParameters& law = {}) {
   const TipContact tip = tip_contact({axes_i, twist_i}, {axes_j, twist_j});
   return make_contact_constants(mix(kNmc, kNmc), tip.body_i, tip.body_j, tip.alpha,
                                 mean_radius(axes_i) + mean_radius(axes_j), mode, law);

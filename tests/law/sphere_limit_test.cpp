@@ -37,7 +37,8 @@ TEST(SphereLimit, ElasticFullyPlasticVariantIsThornton1997) {
   for (double radius : {1.0, 4.675, 10.0}) {
     const Eigen::Vector3d sphere = Eigen::Vector3d::Constant(radius);
     for (HertzMode mode : {HertzMode::hale, HertzMode::exact}) {
-      const auto c = ellc::testing::tip_constants(sphere, sphere, 0.0, 0.0, mode, LawParameters{}.elastic_fully_plastic());
+      const auto c =
+          ellc::testing::tip_constants(sphere, sphere, 0.0, 0.0, mode, LawParameters{}.elastic_fully_plastic());
       const Thornton thornton{c.effective_modulus, radius / 2.0, 1.6 * ellc::testing::kNmc.yield_stress};
       EXPECT_NEAR(c.equivalent_radius, radius / 2.0, 1e-14 * radius);
       EXPECT_NEAR(c.yield_overlap / thornton.yield_overlap(), 1.0, 1e-13);

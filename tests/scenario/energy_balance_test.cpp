@@ -69,7 +69,7 @@ TEST(ScenarioEnergyBalance, PlateWorkIsStoredPlusDissipatedEnergyOverTheWholeRun
   RecordProperty("plate_work_pJ", std::to_string(e.plate_work()));
   std::printf("energy at the end of the quick example: %s\n", describe(e).c_str());
   EXPECT_GT(e.plate_work(), 0.0);
-  EXPECT_EQ(e.gravity_work, 0.0);  // no gravity in the example
+  EXPECT_EQ(e.gravity_work, 0.0);      // no gravity in the example
   EXPECT_GT(e.drag_dissipation, 0.0);  // the example's rest_drag_rate, during the hold only
   EXPECT_GT(e.now.plastic, 0.0);
   EXPECT_GT(e.now.friction, 0.0);

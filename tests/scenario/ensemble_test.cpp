@@ -281,8 +281,7 @@ TEST(Ensemble, AFailingMemberDoesNotStopTheOthers) {
     EXPECT_TRUE(fs::exists(member / name)) << name;
   EXPECT_EQ(read_text(member / "summary.txt"), finished.summary_text);
   const std::string text = read_text(directory / "ensemble_summary.txt");
-  expect_contains(text, {"members = 2", "finished = 1", "failed = 1",
-                         "seed_" + std::to_string(running) + " = finished",
+  expect_contains(text, {"members = 2", "finished = 1", "failed = 1", "seed_" + std::to_string(running) + " = finished",
                          "seed_" + std::to_string(failing) + " = failed: ", "time.dt", "springback_percent"});
   const std::string csv = read_text(directory / "ensemble_summary.csv");
   expect_contains(csv, {"quantity,n,mean,sd,standard_error,min,max\n", "\nspringback_percent,1,"});

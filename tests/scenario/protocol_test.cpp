@@ -32,7 +32,8 @@ TEST(LoadingProtocol, RampedPlateServoHoldAndAReadingAtEquilibrium) {
     const bool approaching = runner.state().approaching;
     runner.advance(1);
     const double velocity = runner.simulation().walls()[engine::kTopWall].velocity;
-    if (runner.state().phase != Phase::hold && runner.state().phase != Phase::done) largest_change = std::max(largest_change, std::abs(velocity - previous));
+    if (runner.state().phase != Phase::hold && runner.state().phase != Phase::done)
+      largest_change = std::max(largest_change, std::abs(velocity - previous));
     previous = velocity;
     if (approaching && !runner.state().approaching) {
       const auto& sim = runner.simulation();
@@ -51,8 +52,8 @@ TEST(LoadingProtocol, RampedPlateServoHoldAndAReadingAtEquilibrium) {
 }
 
 TEST(LoadingProtocol, AnEquilibriumNotReachedInTimeStopsTheRunNamingTheCriterion) {
-  std::string text = replace_line(quasi_static_text(), "hold_time",
-                                  "hold_time = 1.0\nmax_hold_time = 1.0\nequilibrium_ratio = 1e-12");
+  std::string text =
+      replace_line(quasi_static_text(), "hold_time", "hold_time = 1.0\nmax_hold_time = 1.0\nequilibrium_ratio = 1e-12");
   ScenarioRunner runner(quick_scenario(text), testing::in_memory(512));
   try {
     runner.advance(200'000);
@@ -74,8 +75,9 @@ TEST(LoadingProtocol, BadProtocolInputNamesTheField) {
   EXPECT_NE(message("ramp_time", "ramp_time = -1").find("calendering.ramp_time"), std::string::npos);
   EXPECT_NE(message("hold_time", "hold_time = 20.0\nmax_hold_time = 5").find("calendering.max_hold_time"),
             std::string::npos);
-  EXPECT_NE(message("approach_solid_fraction", "approach_solid_fraction = 1.2").find("calendering.approach_solid_fraction"),
-            std::string::npos);
+  EXPECT_NE(
+      message("approach_solid_fraction", "approach_solid_fraction = 1.2").find("calendering.approach_solid_fraction"),
+      std::string::npos);
   EXPECT_NE(message("target_pressure", "target_thickness = 20.0").find("calendering.hold"), std::string::npos);
 }
 

@@ -33,13 +33,12 @@ TEST(EngineScenarioInput, ParticleLargerThanBoxIsNamed) {
 }
 
 TEST(EngineScenarioInput, OverlappingWallsAreNamed) {
-  const std::string text =
-      replace_line(quick_scenario_text(), "target_pressure", "target_thickness = 5.0");
+  const std::string text = replace_line(quick_scenario_text(), "target_pressure", "target_thickness = 5.0");
   const std::string message = input_error_message([&] { (void)quick_scenario(text); });
   EXPECT_NE(message.find("calendering.target_thickness"), std::string::npos) << message;
-  const std::string negative =
-      replace_line(quick_scenario_text(), "target_pressure", "target_thickness = -1.0");
-  EXPECT_NE(input_error_message([&] { (void)quick_scenario(negative); }).find("calendering.target_thickness"), std::string::npos);
+  const std::string negative = replace_line(quick_scenario_text(), "target_pressure", "target_thickness = -1.0");
+  EXPECT_NE(input_error_message([&] { (void)quick_scenario(negative); }).find("calendering.target_thickness"),
+            std::string::npos);
 }
 
 TEST(EngineScenarioInput, BadValuesAreNamed) {
@@ -48,8 +47,8 @@ TEST(EngineScenarioInput, BadValuesAreNamed) {
   const std::string shape = replace_line(quick_scenario_text(), "shape", "shape = \"cube\"");
   EXPECT_NE(input_error_message([&] { (void)quick_scenario(shape); }).find("packing.shape"), std::string::npos);
   for (const char* step : {"0.0", "0.5"}) {  // a Newton step length in (0, 0.1] rad
-    const std::string newton =
-        replace_line(quick_scenario_text(), "friction", std::string("friction = 0.3\nnarrow_phase_final_step = ") + step);
+    const std::string newton = replace_line(quick_scenario_text(), "friction",
+                                            std::string("friction = 0.3\nnarrow_phase_final_step = ") + step);
     EXPECT_NE(input_error_message([&] { (void)quick_scenario(newton); }).find("contact.narrow_phase_final_step"),
               std::string::npos)
         << step;

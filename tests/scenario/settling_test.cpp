@@ -33,10 +33,10 @@ using testing::replace_line;
 // elastic-ish contacts, overlaps ~1 % of r̂. The drag γ = 0.1/µs caps the fall at g/γ = 0.2 µm/µs
 // (impacts at 0.2 m/s). The minimum time (20 µs) is far shorter than the fall (~100 µs), so the
 // phase ends on the speed criterion, not on the clock; max_time is twice the ~280 µs it takes.
-constexpr double kGravity = 0.02;      // µm/µs²
-constexpr double kDragRate = 0.1;      // 1/µs
-constexpr double kMinTime = 20.0;      // µs
-constexpr double kMaxTime = 600.0;     // µs
+constexpr double kGravity = 0.02;         // µm/µs²
+constexpr double kDragRate = 0.1;         // 1/µs
+constexpr double kMinTime = 20.0;         // µs
+constexpr double kMaxTime = 600.0;        // µs
 constexpr double kSpeedTolerance = 2e-3;  // µm/µs: 1 % of the terminal speed g/γ
 
 std::string settling_scenario_text() {
@@ -158,8 +158,8 @@ TEST(EngineSettling, DepositComesToRestOnTheFloorWhichCarriesItsWeight) {
   RecordProperty("solid_fraction_settled", std::to_string(settled.solid_fraction));
   // The bulk, without the rough top: a uniform layer of height H has its centre of mass at H / 2.
   RecordProperty("solid_fraction_bulk",
-                 std::to_string(p.total_volume() / (sim.settings().box.lx * sim.settings().box.ly * 2.0 *
-                                                    settled.centre_of_mass_z)));
+                 std::to_string(p.total_volume() /
+                                (sim.settings().box.lx * sim.settings().box.ly * 2.0 * settled.centre_of_mass_z)));
   RecordProperty("max_overlap_over_r", std::to_string(max_overlap));
   RecordProperty("coordination", std::to_string(coordination));
   RecordProperty("floor_contacts", std::to_string(sim.wall_contact_count(kBottomWall)));

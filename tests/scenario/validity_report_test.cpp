@@ -59,14 +59,15 @@ TEST(ScenarioValidity, LoadedStateIsTheValidityReportAtTheEndOfTheHold) {
   EXPECT_GT(v.wall_contacts, 10U);
   EXPECT_GT(v.largest_ratio, 0.16);
   const ValidityShares& share = summary.loaded_validity_shares;
-  EXPECT_NEAR(share.pair_contacts, static_cast<double>(v.pair_contacts_beyond) / static_cast<double>(v.pair_contacts), 1e-15);
+  EXPECT_NEAR(share.pair_contacts, static_cast<double>(v.pair_contacts_beyond) / static_cast<double>(v.pair_contacts),
+              1e-15);
   EXPECT_NEAR(share.wall_force, v.wall_force_beyond / v.wall_force, 1e-15);
   for (double value : {share.pair_contacts, share.pair_force, share.wall_contacts, share.wall_force}) {
     EXPECT_GE(value, 0.0);
     EXPECT_LE(value, 1.0);
   }
   EXPECT_GT(share.pair_force, share.pair_contacts);  // the contacts beyond carry more than their number's share
-  EXPECT_GT(share.wall_force, 0.5);                   // measured 0.955
+  EXPECT_GT(share.wall_force, 0.5);                  // measured 0.955
   EXPECT_LT(summary.loaded_unbalanced_force_ratio, 1e-2);
   EXPECT_GE(summary.loaded_kinetic_over_elastic, 0.0);
   const std::vector<std::string> warnings = summary_warnings(summary);
@@ -90,16 +91,42 @@ TEST(ScenarioValidity, LoadedStateIsTheValidityReportAtTheEndOfTheHold) {
     values[keys.back()] = line.substr(equals + 3);
   }
   std::remove(path.c_str());
-  const std::vector<std::string> expected = {
-      "finished", "particles", "steps", "time_us", "dt_us", "dt_estimate_us", "max_pressure_MPa",
-      "loaded_thickness_um", "final_thickness_um", "springback_percent", "loaded_porosity", "final_porosity",
-      "plastic_dissipation_pJ", "plastic_dissipation_calendering_pJ", "narrow_phase_failures", "plate_work_pJ",
-      "gravity_work_pJ", "energy_residual_pJ", "energy_residual_fraction", "held_pressure_MPa", "loaded_time_us",
-      "loaded_plate_speed_um_per_us", "released_time_us", "released_unbalanced_force_ratio", "loaded_state_recorded",
-      "loaded_unbalanced_force_ratio", "loaded_kinetic_over_elastic", "validity_threshold", "validity_r_hat",
-      "loaded_pair_contacts", "loaded_pair_contacts_beyond_fraction", "loaded_pair_force_beyond_fraction",
-      "loaded_wall_contacts", "loaded_wall_contacts_beyond_fraction", "loaded_wall_force_beyond_fraction",
-      "loaded_largest_size_ratio"};
+  const std::vector<std::string> expected = {"finished",
+                                             "particles",
+                                             "steps",
+                                             "time_us",
+                                             "dt_us",
+                                             "dt_estimate_us",
+                                             "max_pressure_MPa",
+                                             "loaded_thickness_um",
+                                             "final_thickness_um",
+                                             "springback_percent",
+                                             "loaded_porosity",
+                                             "final_porosity",
+                                             "plastic_dissipation_pJ",
+                                             "plastic_dissipation_calendering_pJ",
+                                             "narrow_phase_failures",
+                                             "plate_work_pJ",
+                                             "gravity_work_pJ",
+                                             "energy_residual_pJ",
+                                             "energy_residual_fraction",
+                                             "held_pressure_MPa",
+                                             "loaded_time_us",
+                                             "loaded_plate_speed_um_per_us",
+                                             "released_time_us",
+                                             "released_unbalanced_force_ratio",
+                                             "loaded_state_recorded",
+                                             "loaded_unbalanced_force_ratio",
+                                             "loaded_kinetic_over_elastic",
+                                             "validity_threshold",
+                                             "validity_r_hat",
+                                             "loaded_pair_contacts",
+                                             "loaded_pair_contacts_beyond_fraction",
+                                             "loaded_pair_force_beyond_fraction",
+                                             "loaded_wall_contacts",
+                                             "loaded_wall_contacts_beyond_fraction",
+                                             "loaded_wall_force_beyond_fraction",
+                                             "loaded_largest_size_ratio"};
   EXPECT_EQ(keys, expected);
   EXPECT_EQ(values["loaded_state_recorded"], "true");
   EXPECT_EQ(values["validity_threshold"], "0.16");

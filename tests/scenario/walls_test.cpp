@@ -58,15 +58,13 @@ TEST(ScenarioWalls, MaterialAndFrictionAreReadInEveryForm) {
   EXPECT_EQ(rigid.wall_material->yield_stress, kInfinity);
   EXPECT_EQ(rigid.wall_friction, 0.5);
   // The runner hands them to the engine.
-  const ScenarioRunner runner(quick_scenario(with_walls("[walls]\nmaterial = \"rigid\"\nfriction = 0.5")),
-                              in_memory());
+  const ScenarioRunner runner(quick_scenario(with_walls("[walls]\nmaterial = \"rigid\"\nfriction = 0.5")), in_memory());
   EXPECT_EQ(runner.simulation().settings().contact.wall_material->youngs_modulus, kInfinity);
   EXPECT_EQ(runner.simulation().settings().contact.wall_friction, 0.5);
 
-  const auto steel =
-      quick_scenario(with_walls("[walls]\nfriction = 0.2\n[walls.material]\nyoungs_modulus = 210000.0\n"
-                                "poisson_ratio = 0.3"))
-          .contact;
+  const auto steel = quick_scenario(with_walls("[walls]\nfriction = 0.2\n[walls.material]\nyoungs_modulus = 210000.0\n"
+                                               "poisson_ratio = 0.3"))
+                         .contact;
   ASSERT_TRUE(steel.wall_material.has_value());
   EXPECT_EQ(steel.wall_material->youngs_modulus, 210000.0);
   EXPECT_EQ(steel.wall_material->poisson_ratio, 0.3);
@@ -131,8 +129,7 @@ TEST(ScenarioWalls, RigidPlateRaisesThePlatePressureAtTheSameGap) {
     ParticleSet particles;
     particles.add(0, Eigen::Vector3d::Constant(radius), scenario.packing.density, {20.0, 20.0, radius - overlap},
                   Eigen::Quaterniond::Identity());
-    const Simulation sim(settings, particles,
-                         {Wall{0.0, 0.0, 1, {}}, Wall{2.0 * (radius - overlap), 0.0, -1, {}}});
+    const Simulation sim(settings, particles, {Wall{0.0, 0.0, 1, {}}, Wall{2.0 * (radius - overlap), 0.0, -1, {}}});
     EXPECT_EQ(sim.contact_counts().wall_contacts, 2U);
     return sim.wall_pressure(kTopWall);
   };
@@ -151,8 +148,8 @@ TEST(ScenarioWalls, RigidPlateRaisesThePlatePressureAtTheSameGap) {
   EXPECT_LT(steel, rigid);
   // Hertz itself: F = 4/3 E_e √r δ^{3/2} over the box.
   const double box = 42.0 * 42.0;
-  EXPECT_NEAR(rigid * box, 4.0 / 3.0 * effective_modulus(nmc, rigid_material()) * std::sqrt(radius) *
-                               std::pow(overlap, 1.5),
+  EXPECT_NEAR(rigid * box,
+              4.0 / 3.0 * effective_modulus(nmc, rigid_material()) * std::sqrt(radius) * std::pow(overlap, 1.5),
               1e-6 * rigid * box);
 }
 

@@ -26,7 +26,9 @@ inline Eigen::Vector3d random_unit(Rng& rng) {
   return v.normalized();
 }
 
-inline double uniform(Rng& rng, double low, double high) { return std::uniform_real_distribution<double>(low, high)(rng); }
+inline double uniform(Rng& rng, double low, double high) {
+  return std::uniform_real_distribution<double>(low, high)(rng);
+}
 
 // Semi-axes with aspect 1 : [0.3..3] : [0.3..3] (log-uniform) scaled to mean radius r̂.
 inline Eigen::Vector3d random_semi_axes(Rng& rng, double mean_radius) {

@@ -47,10 +47,17 @@ struct Session {
 
 std::vector<std::string> lattice(const std::string& atom_style) {
   const std::string n = std::to_string(kCells);
-  return {"units micro",        "atom_style " + atom_style,   "boundary p p p",
-          "lattice sc 9.0",     "region box block 0 " + n + " 0 " + n + " 0 " + n, "create_box 1 box",
-          "create_atoms 1 box", "neighbor 1.0 bin",            "neigh_modify every 1 delay 0 check yes",
-          "timestep 5e-5",      "velocity all create 5e12 8675309 dist gaussian mom yes rot no"};
+  return {"units micro",
+          "atom_style " + atom_style,
+          "boundary p p p",
+          "lattice sc 9.0",
+          "region box block 0 " + n + " 0 " + n + " 0 " + n,
+          "create_box 1 box",
+          "create_atoms 1 box",
+          "neighbor 1.0 bin",
+          "neigh_modify every 1 delay 0 check yes",
+          "timestep 5e-5",
+          "velocity all create 5e12 8675309 dist gaussian mom yes rot no"};
 }
 
 void report(benchmark::State& state, double contacts_per_particle) {
@@ -74,11 +81,11 @@ void time_steps(benchmark::State& state, const Session& session, const std::stri
 
 void EllipsoidBK(benchmark::State& state) {
   const Session session;
-  time_steps(state, session, "ellipsoid",
-             {"set type 1 shape 12 10 8.4", "set type 1 quat/random 4711", "set type 1 density 4.7",
-              "pair_style ellipsoid/bk",
-              "pair_coeff 1 1 1.42e8 0.25 7.9e6 friction 0.3 damping 0.1 tangential_damping 0.1",
-              "fix integrate all nve/asphere"});
+  time_steps(
+      state, session, "ellipsoid",
+      {"set type 1 shape 12 10 8.4", "set type 1 quat/random 4711", "set type 1 density 4.7", "pair_style ellipsoid/bk",
+       "pair_coeff 1 1 1.42e8 0.25 7.9e6 friction 0.3 damping 0.1 tangential_damping 0.1",
+       "fix integrate all nve/asphere"});
   const auto* pair = dynamic_cast<const ellc_lammps::PairEllipsoidBK*>(session.lmp->force->pair);
   report(state, 2.0 * static_cast<double>(pair->touching_pairs()) / (kCells * kCells * kCells));
 }

@@ -12,8 +12,8 @@
 #include <string>
 #include <vector>
 
-#include "ellc/hertz/elliptic_hertz.hpp"
 #include "ellc/cases/case_file.hpp"
+#include "ellc/hertz/elliptic_hertz.hpp"
 #include "ellc/law/contact_constants.hpp"
 
 namespace ellc {

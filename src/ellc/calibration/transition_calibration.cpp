@@ -54,10 +54,9 @@ struct ProfileResiduals {
   bool operator()(const T* const shape, const T* const exponent, T* residuals) const {
     for (std::size_t index = 0; index < samples->size(); ++index) {
       const LambdaSample& sample = (*samples)[index];
-      residuals[index] =
-          sample.weight *
-          (lambda_of(shape[0], shape[1], exponent[0], sample.contact_radius_ratio, yield_pressure_factor) -
-           sample.lambda);
+      residuals[index] = sample.weight * (lambda_of(shape[0], shape[1], exponent[0], sample.contact_radius_ratio,
+                                                    yield_pressure_factor) -
+                                          sample.lambda);
     }
     return true;
   }
@@ -179,7 +178,8 @@ bool fit_shared_exponent(std::vector<CaseCalibration>& cases, double yield_press
     exponent = exponents[exponents.size() / 2];
     std::vector<std::array<double, 2>> shapes;
     shapes.reserve(informative.size());
-    for (const std::size_t index : informative) shapes.push_back({cases[index].own.lambda_max, cases[index].own.epsilon_max});
+    for (const std::size_t index : informative)
+      shapes.push_back({cases[index].own.lambda_max, cases[index].own.epsilon_max});
     ceres::Problem problem;
     for (std::size_t slot = 0; slot < informative.size(); ++slot)
       add_case(problem, cases[informative[slot]].profile, yield_pressure_factor, shapes[slot].data(), &exponent);
@@ -189,7 +189,8 @@ bool fit_shared_exponent(std::vector<CaseCalibration>& cases, double yield_press
       cases[informative[slot]].shared = {shapes[slot][0], shapes[slot][1], exponent};
   }
   for (auto& entry : cases)
-    if (!entry.own_exponent_fitted || informative.empty()) entry.shared = fit_case(entry.profile, yield_pressure_factor, exponent);
+    if (!entry.own_exponent_fitted || informative.empty())
+      entry.shared = fit_case(entry.profile, yield_pressure_factor, exponent);
   return !informative.empty();
 }
 
@@ -225,7 +226,8 @@ std::string format_percent(double fraction) {
 
 }  // namespace
 
-double profile_lambda(const TransitionPoint& point, double contact_radius_ratio, double yield_pressure_factor) noexcept {
+double profile_lambda(const TransitionPoint& point, double contact_radius_ratio,
+                      double yield_pressure_factor) noexcept {
   return lambda_of(point.lambda_max, point.epsilon_max, point.exponent, contact_radius_ratio, yield_pressure_factor);
 }
 
@@ -259,7 +261,8 @@ ExponentialFit fit_exponential(std::span<const double> x, std::span<const double
     fit.amplitude = fixed_amplitude;
     fit.rate = fixed_rate;
     double sum = 0.0;
-    for (std::size_t index = 0; index < x.size(); ++index) sum += y[index] - fixed_amplitude * std::exp(fixed_rate * x[index]);
+    for (std::size_t index = 0; index < x.size(); ++index)
+      sum += y[index] - fixed_amplitude * std::exp(fixed_rate * x[index]);
     fit.offset = sum / static_cast<double>(x.size());
     return fit;
   }
@@ -309,7 +312,8 @@ CalibrationResult calibrate(const std::vector<CalibrationCase>& cases, const Cal
     CaseCalibration entry;
     entry.name = data.name;
     entry.equivalent_radius = constants.equivalent_radius;
-    entry.radius_ratio = constants.equivalent_radius / (mean_radius(data.body_i.semi_axes) + mean_radius(data.body_j.semi_axes));
+    entry.radius_ratio =
+        constants.equivalent_radius / (mean_radius(data.body_i.semi_axes) + mean_radius(data.body_j.semi_axes));
     entry.yield_overlap = constants.yield_overlap;
     entry.yield_force = constants.yield_force;
     entry.profile = lambda_profile(constants, data.overlaps, data.forces);
@@ -348,13 +352,14 @@ CalibrationResult calibrate(const std::vector<CalibrationCase>& cases, const Cal
     const double hertz_deviation = std::sqrt(deviation_sq / static_cast<double>(entry.profile.size()));
     if (hertz_deviation < options.elastic_tolerance && hertz_deviation <= 1.25 * entry.own_rms + 0.001) {
       where << "the data never leaves the elastic regime: beyond delta_Y = " << constants.yield_overlap
-            << " µm the force stays on the Hertz curve (RMS deviation " << format_percent(hertz_deviation)
-            << " < " << format_percent(options.elastic_tolerance) << ", no worse than the fitted law's "
+            << " µm the force stays on the Hertz curve (RMS deviation " << format_percent(hertz_deviation) << " < "
+            << format_percent(options.elastic_tolerance) << ", no worse than the fitted law's "
             << format_percent(entry.own_rms)
             << "), so there is no plastic transition to fit; is the material elastic-plastic?";
       throw InputError(data.name, where.str());
     }
-    if (entry.own.lambda_max >= kLambdaMaxUpper * (1 - 1e-6) || entry.own.epsilon_max >= kEpsilonMaxUpper * (1 - 1e-6)) {
+    if (entry.own.lambda_max >= kLambdaMaxUpper * (1 - 1e-6) ||
+        entry.own.epsilon_max >= kEpsilonMaxUpper * (1 - 1e-6)) {
       where << "lambda_FEM of eq. (51) shows no plateau (the fit ran to lambda_max = " << entry.own.lambda_max
             << ", epsilon_max = " << entry.own.epsilon_max
             << "): the data looks elastic or stops long before the fully plastic regime";
@@ -377,15 +382,17 @@ CalibrationResult calibrate(const std::vector<CalibrationCase>& cases, const Cal
   result.exponent_fitted = fit_shared_exponent(result.cases, yield_factor, options.prior.fit.transition_exponent,
                                                result.law.fit.transition_exponent);
   if (!result.exponent_fitted)
-    result.warnings.push_back("no case pins n (with n free, no fit reaches its lambda plateau inside the data, or n runs to a bound): n kept from the prior (" +
-                              format_number(options.prior.fit.transition_exponent) + ")");
+    result.warnings.push_back(
+        "no case pins n (with n free, no fit reaches its lambda plateau inside the data, or n runs to a bound): n kept "
+        "from the prior (" +
+        format_number(options.prior.fit.transition_exponent) + ")");
   std::vector<double> radius_ratios;
   std::vector<double> lambda_maxima;
   std::vector<double> epsilon_maxima;
   for (auto& entry : result.cases) {
     entry.shared_rms = rms_error(entry.profile, entry.shared, yield_factor);
-    entry.plateau_reached = !entry.profile.empty() &&
-                            entry.profile.back().contact_radius_ratio >= entry.shared.epsilon_max;
+    entry.plateau_reached =
+        !entry.profile.empty() && entry.profile.back().contact_radius_ratio >= entry.shared.epsilon_max;
     if (!entry.plateau_reached) {
       std::ostringstream warning;
       warning.precision(4);
@@ -416,12 +423,15 @@ CalibrationResult calibrate(const std::vector<CalibrationCase>& cases, const Cal
     result.warnings.push_back(std::string("fewer than 4 distinct R_e/r^ among the cases: o and t kept from the prior") +
                               (result.amplitudes_fitted ? "" : ", and m and s too"));
   if (std::abs(fit.lambda_rate) >= kRateBound * (1 - 1e-6) || std::abs(fit.epsilon_rate) >= kRateBound * (1 - 1e-6))
-    result.warnings.push_back("an eq. (52) rate ran to its bound +-25: lambda_max or epsilon_max of the cases do not follow one exponential in R_e/r^ (see PREFIX_radius.png)");
+    result.warnings.push_back(
+        "an eq. (52) rate ran to its bound +-25: lambda_max or epsilon_max of the cases do not follow one exponential "
+        "in R_e/r^ (see PREFIX_radius.png)");
 
   // The calibrated law as `ellc curve` evaluates it, against each case's loading data.
   for (std::size_t index = 0; index < cases.size(); ++index) {
     auto& entry = result.cases[index];
-    const ContactConstants constants = case_contact_constants(cases[index].body_i, cases[index].body_j, options.hertz, result.law);
+    const ContactConstants constants =
+        case_contact_constants(cases[index].body_i, cases[index].body_j, options.hertz, result.law);
     double sum = 0.0;
     for (const LambdaSample& sample : entry.profile) {
       const double relative = loading_force(constants, sample.overlap).force / sample.force - 1.0;
@@ -458,8 +468,9 @@ std::string model_table_toml(const CalibrationResult& result) {
   const struct {
     const char* key;
     double value;
-  } entries[] = {{"m", fit.lambda_amplitude},  {"o", fit.lambda_rate},  {"p", fit.lambda_offset},
-                 {"s", fit.epsilon_amplitude}, {"t", fit.epsilon_rate}, {"u", fit.epsilon_offset},
+  } entries[] = {{"m", fit.lambda_amplitude},    {"o", fit.lambda_rate},
+                 {"p", fit.lambda_offset},       {"s", fit.epsilon_amplitude},
+                 {"t", fit.epsilon_rate},        {"u", fit.epsilon_offset},
                  {"n", fit.transition_exponent}, {"yield_pressure_factor", result.law.yield_pressure_factor}};
   for (const auto& [key, value] : entries) out << key << " = " << format_number(value) << "\n";
   return out.str();

@@ -53,19 +53,19 @@ struct TransitionPoint {
 
 struct CaseCalibration {
   std::string name;
-  double radius_ratio = 0.0;      // R_e / r̂^{I,J}
+  double radius_ratio = 0.0;       // R_e / r̂^{I,J}
   double equivalent_radius = 0.0;  // R_e
-  double yield_overlap = 0.0;     // δ_Y
-  double yield_force = 0.0;       // F_pY
+  double yield_overlap = 0.0;      // δ_Y
+  double yield_force = 0.0;        // F_pY
   std::vector<LambdaSample> profile;
-  TransitionPoint own;     // step 1: λ_max, ε_max, n of this case alone
+  TransitionPoint own;               // step 1: λ_max, ε_max, n of this case alone
   bool own_exponent_fitted = false;  // false: the data does not pin n (no plateau), own.n is the prior's
-  TransitionPoint shared;  // step 2: with the n shared by all cases
-  double own_rms = 0.0;     // RMS relative force error of step 1 over the profile points
-  double shared_rms = 0.0;  // same for step 2
-  double model_rms = 0.0;   // same for the final eq. (52) constants (the law as `ellc curve` runs it)
-  bool plateau_reached = false;  // the data reaches c_c ≥ ε_max c_Y (else λ_max, ε_max are extrapolated)
-  bool transition_found = true;  // false: ε_max of step 1 ended on its lower bound, λ_FEM never rises
+  TransitionPoint shared;            // step 2: with the n shared by all cases
+  double own_rms = 0.0;              // RMS relative force error of step 1 over the profile points
+  double shared_rms = 0.0;           // same for step 2
+  double model_rms = 0.0;            // same for the final eq. (52) constants (the law as `ellc curve` runs it)
+  bool plateau_reached = false;      // the data reaches c_c ≥ ε_max c_Y (else λ_max, ε_max are extrapolated)
+  bool transition_found = true;      // false: ε_max of step 1 ended on its lower bound, λ_FEM never rises
 };
 
 struct CalibrationResult {

@@ -14,8 +14,7 @@ Material read_material(TableReader& table) {
   material.poisson_ratio = table.number("poisson_ratio");
   material.yield_stress = table.number("yield_stress");
   table.finish();
-  if (const std::string error = validation_error(material, table.path());
-      !error.empty())
+  if (const std::string error = validation_error(material, table.path()); !error.empty())
     throw InputError(table.source(), error);
   return material;
 }
@@ -27,8 +26,8 @@ BodySpec read_body(TableReader& table, const std::optional<Material>& default_ma
   const auto aspect = table.optional_numbers("aspect", 3);
   const auto mean = table.optional_number("mean_radius");
   if (semi_axes && (aspect || mean))
-    throw InputError(table.source(), "[" + table.path() +
-                                         "] gives both semi_axes and aspect/mean_radius: expected one of the two");
+    throw InputError(table.source(),
+                     "[" + table.path() + "] gives both semi_axes and aspect/mean_radius: expected one of the two");
   if (semi_axes) {
     for (int axis = 0; axis < 3; ++axis) {
       if ((*semi_axes)[axis] <= 0.0)
@@ -60,10 +59,11 @@ BodySpec read_body(TableReader& table, const std::optional<Material>& default_ma
 
   const double b_over_a = body.semi_axes.y() / body.semi_axes.x();
   const double c_over_a = body.semi_axes.z() / body.semi_axes.x();
-  auto outside = [](double ratio) { return ratio < kCalibratedAspectMin * (1 - 1e-12) || ratio > kCalibratedAspectMax * (1 + 1e-12); };
+  auto outside = [](double ratio) {
+    return ratio < kCalibratedAspectMin * (1 - 1e-12) || ratio > kCalibratedAspectMax * (1 + 1e-12);
+  };
   if (outside(b_over_a) || outside(c_over_a))
-    warnings.push_back(table.path() + " has aspect 1:" +
-                       format_number(b_over_a) + ":" + format_number(c_over_a) +
+    warnings.push_back(table.path() + " has aspect 1:" + format_number(b_over_a) + ":" + format_number(c_over_a) +
                        ", outside the calibrated range 1:[0.5..2]:[0.5..2] of the transition fits (eq. 52-53); "
                        "the law still evaluates");
   return body;
@@ -119,7 +119,8 @@ CurveCase read_case(const toml::table& root_table, const std::string& source) {
     if (absolute && relative)
       throw InputError(source, "[protocol] gives both waypoints and waypoints_relative: expected one of the two");
     if (!absolute && !relative)
-      protocol.fail("waypoints", "missing", "waypoints = [...] (µm) or waypoints_relative = [...] (fractions of r̂^I + r̂^J)");
+      protocol.fail("waypoints", "missing",
+                    "waypoints = [...] (µm) or waypoints_relative = [...] (fractions of r̂^I + r̂^J)");
     const double scale = relative ? mean_radius(result.body_i.semi_axes) + mean_radius(result.body_j.semi_axes) : 1.0;
     const auto& given = absolute ? *absolute : *relative;
     const char* key = absolute ? "waypoints" : "waypoints_relative";

@@ -19,7 +19,8 @@ Eigen::Vector3d unit_vector(TableReader& table, const char* key, const std::vect
   const Eigen::Vector3d vector = vector3(values);
   const double length = vector.norm();
   if (!(length > 0.0) || !std::isfinite(length))
-    table.fail(key, "[" + format_number(values[0]) + ", " + format_number(values[1]) + ", " + format_number(values[2]) + "]",
+    table.fail(key,
+               "[" + format_number(values[0]) + ", " + format_number(values[1]) + ", " + format_number(values[2]) + "]",
                "a non-zero vector");
   return vector / length;
 }
@@ -33,7 +34,8 @@ PosedBodySpec read_posed_body(TableReader& table, const std::optional<Material>&
   const auto axis = table.optional_numbers("axis", 3);
   const auto angle = table.optional_number("angle_deg");
   if (orientation && (axis || angle))
-    throw InputError(table.source(), "[" + table.path() + "] gives both orientation and axis/angle_deg: expected one of the two");
+    throw InputError(table.source(),
+                     "[" + table.path() + "] gives both orientation and axis/angle_deg: expected one of the two");
   Eigen::Quaterniond rotation = Eigen::Quaterniond::Identity();
   if (orientation) {
     const Eigen::Quaterniond q((*orientation)[0], (*orientation)[1], (*orientation)[2], (*orientation)[3]);

@@ -28,7 +28,7 @@ struct PosedBodySpec {
 };
 
 struct WallSpec {
-  Plane plane;                      // unit normal, into the particles' side
+  Plane plane;                       // unit normal, into the particles' side
   std::optional<Material> material;  // none: the body's
 };
 

@@ -10,7 +10,9 @@ namespace ellc {
 double recoverable_energy(const ContactConstants& constants, double overlap, double max_overlap) noexcept {
   if (!(overlap > 0.0)) return 0.0;
   // ∫₀^x C s^{3/2} ds = (2/5) C x^{5/2} for the branch F = C x^{3/2}.
-  const auto energy = [](double coefficient, double x) { return x > 0.0 ? 0.4 * coefficient * x * x * std::sqrt(x) : 0.0; };
+  const auto energy = [](double coefficient, double x) {
+    return x > 0.0 ? 0.4 * coefficient * x * x * std::sqrt(x) : 0.0;
+  };
   if (max_overlap <= constants.yield_overlap) return energy(constants.hertz_coefficient, overlap);
   const UnloadingBranch branch = unloading_branch(constants, std::max(max_overlap, overlap));
   return energy(branch.unloading_coefficient, overlap - branch.plastic_overlap);

@@ -26,16 +26,18 @@
 namespace ellc {
 
 struct ContactHistory {
-  double max_overlap = 0.0;                        // δ_*
-  std::array<double, 3> tangential_spring{};       // ξ
-  std::array<double, 3> warm_normal{};             // n₀
-  double warm_valid = 0.0;                         // 1: n₀ is set
-  double spring_stiffness = 0.0;                   // k_t of the last step
+  double max_overlap = 0.0;                   // δ_*
+  std::array<double, 3> tangential_spring{};  // ξ
+  std::array<double, 3> warm_normal{};        // n₀
+  double warm_valid = 0.0;                    // 1: n₀ is set
+  double spring_stiffness = 0.0;              // k_t of the last step
 
   static constexpr std::size_t kDoubles = 9;
 
   [[nodiscard]] bool active() const noexcept { return max_overlap > 0.0; }
-  [[nodiscard]] Eigen::Map<Eigen::Vector3d> spring() noexcept { return Eigen::Map<Eigen::Vector3d>(tangential_spring.data()); }
+  [[nodiscard]] Eigen::Map<Eigen::Vector3d> spring() noexcept {
+    return Eigen::Map<Eigen::Vector3d>(tangential_spring.data());
+  }
   [[nodiscard]] Eigen::Map<const Eigen::Vector3d> spring() const noexcept {
     return Eigen::Map<const Eigen::Vector3d>(tangential_spring.data());
   }
@@ -54,7 +56,9 @@ struct ContactHistory {
   }
 
   // The flat form, for stores that keep raw doubles (LAMMPS's per-atom arrays, restart files).
-  void write_to(double* values) const noexcept { std::memcpy(values, static_cast<const void*>(this), sizeof(ContactHistory)); }
+  void write_to(double* values) const noexcept {
+    std::memcpy(values, static_cast<const void*>(this), sizeof(ContactHistory));
+  }
   [[nodiscard]] static ContactHistory read_from(const double* values) noexcept {
     ContactHistory history;
     std::memcpy(static_cast<void*>(&history), values, sizeof(ContactHistory));

@@ -5,8 +5,8 @@
 #include <utility>
 
 #include "ellc/contact/normal_damping.hpp"
-#include "ellc/law/contact_law.hpp"
 #include "ellc/contact/tangential_spring.hpp"
+#include "ellc/law/contact_law.hpp"
 
 namespace ellc {
 
@@ -15,12 +15,12 @@ namespace {
 template <typename Model, std::size_t N>
 using NameTable = std::array<std::pair<Model, std::string_view>, N>;
 
-constexpr NameTable<NormalModel, 2> kNormalNames{{{NormalModel::becker_kamlah, "becker_kamlah"},
-                                                  {NormalModel::hertz, "hertz"}}};
-constexpr NameTable<DampingModel, 2> kDampingNames{{{DampingModel::contact_radius, "contact_radius"},
-                                                    {DampingModel::hertz_tangent, "hertz_tangent"}}};
-constexpr NameTable<TangentialModel, 2> kTangentialNames{{{TangentialModel::mindlin, "mindlin"},
-                                                          {TangentialModel::ratio, "ratio"}}};
+constexpr NameTable<NormalModel, 2> kNormalNames{
+    {{NormalModel::becker_kamlah, "becker_kamlah"}, {NormalModel::hertz, "hertz"}}};
+constexpr NameTable<DampingModel, 2> kDampingNames{
+    {{DampingModel::contact_radius, "contact_radius"}, {DampingModel::hertz_tangent, "hertz_tangent"}}};
+constexpr NameTable<TangentialModel, 2> kTangentialNames{
+    {{TangentialModel::mindlin, "mindlin"}, {TangentialModel::ratio, "ratio"}}};
 
 template <typename Model, std::size_t N>
 std::string_view lookup_name(const NameTable<Model, N>& table, Model model) noexcept {
@@ -69,8 +69,9 @@ BranchStiffness branch_stiffness(DampingModel model, const ContactConstants& con
   stiffness.contact_radius = branch.radius_scale == 1.0
                                  ? std::sqrt(constants.contact_radius_sq_per_overlap * x)
                                  : std::sqrt(constants.contact_radius_sq_per_overlap * branch.radius_scale * x);
-  stiffness.normal = model == DampingModel::hertz_tangent ? 1.5 * branch.coefficient * std::sqrt(x)
-                                                          : 2.0 * constants.effective_modulus * stiffness.contact_radius;
+  stiffness.normal = model == DampingModel::hertz_tangent
+                         ? 1.5 * branch.coefficient * std::sqrt(x)
+                         : 2.0 * constants.effective_modulus * stiffness.contact_radius;
   return stiffness;
 }
 
@@ -79,7 +80,9 @@ BranchStiffness branch_stiffness(DampingModel model, const ContactConstants& con
 std::string_view name_of(NormalModel model) noexcept { return lookup_name(kNormalNames, model); }
 std::string_view name_of(DampingModel model) noexcept { return lookup_name(kDampingNames, model); }
 std::string_view name_of(TangentialModel model) noexcept { return lookup_name(kTangentialNames, model); }
-std::optional<NormalModel> normal_model_named(std::string_view name) noexcept { return lookup_model(kNormalNames, name); }
+std::optional<NormalModel> normal_model_named(std::string_view name) noexcept {
+  return lookup_model(kNormalNames, name);
+}
 std::optional<DampingModel> damping_model_named(std::string_view name) noexcept {
   return lookup_model(kDampingNames, name);
 }
@@ -91,8 +94,8 @@ std::string damping_model_names() { return joined_names(kDampingNames); }
 std::string tangential_model_names() { return joined_names(kTangentialNames); }
 
 std::string validation_error(const ContactModel& model, std::string_view where) {
-  for (const auto& [name, value] : {std::pair{"normal_damping", model.normal_damping},
-                                    std::pair{"tangential_damping", model.tangential_damping}})
+  for (const auto& [name, value] :
+       {std::pair{"normal_damping", model.normal_damping}, std::pair{"tangential_damping", model.tangential_damping}})
     if (!(value >= 0.0 && value < 1.0))
       return std::string(where) + "." + name + " = " + std::to_string(value) + ": expected a damping ratio in [0, 1)";
   const std::pair<const char*, double> non_negative[] = {{"friction", model.friction},
@@ -122,8 +125,9 @@ InteractionContext make_interaction(const ContactModel& model, const Material& b
 
 namespace {
 double tangential_stiffness(const InteractionContext& context, const BranchStiffness& branch) noexcept {
-  return context.model.tangential == TangentialModel::mindlin ? 8.0 * context.shear_modulus * branch.contact_radius
-                                                               : context.model.tangential_stiffness_ratio * branch.normal;
+  return context.model.tangential == TangentialModel::mindlin
+             ? 8.0 * context.shear_modulus * branch.contact_radius
+             : context.model.tangential_stiffness_ratio * branch.normal;
 }
 }  // namespace
 
@@ -171,6 +175,5 @@ ContactForce contact_force(const InteractionContext& context, const ContactConst
   result.friction_dissipation = tangential_work - stored - dashpot + released;
   return result;
 }
-
 
 }  // namespace ellc

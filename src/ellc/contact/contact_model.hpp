@@ -90,8 +90,10 @@ struct ContactKinematics {
 // in which the bodies moved with the kinematics' relative velocity.
 struct ContactForce {
   Eigen::Vector3d on_j = Eigen::Vector3d::Zero();
-  double damping_dissipation = 0.0;   // normal dashpot −(F_n − F_law) v_n dt ≥ 0, tangential c_t |v_t|² dt while sticking
-  double friction_dissipation = 0.0;  // tangential work not kept by the spring (sliding): −F_t·v_t dt − ΔE_spring − the above
+  double damping_dissipation =
+      0.0;  // normal dashpot −(F_n − F_law) v_n dt ≥ 0, tangential c_t |v_t|² dt while sticking
+  double friction_dissipation =
+      0.0;  // tangential work not kept by the spring (sliding): −F_t·v_t dt − ΔE_spring − the above
 };
 
 // Force on J of one touching contact whose law force F_law = law_force was evaluated with
@@ -100,6 +102,5 @@ struct ContactForce {
 [[nodiscard]] ContactForce contact_force(const InteractionContext& context, const ContactConstants& constants,
                                          double overlap, double law_force, const ContactKinematics& kinematics,
                                          double dt, ContactHistory& history) noexcept;
-
 
 }  // namespace ellc

@@ -106,8 +106,8 @@ WallForces wall_forces(const PairSolution& solution, const Eigen::Vector3d& cent
                        ContactHistory& history) noexcept {
   const Eigen::Vector3d lever = solution.point - centre;
   const ContactKinematics kinematics{
-      solution.normal, Eigen::Vector3d(0.0, 0.0, wall_velocity) - motion.velocity - motion.angular_velocity.cross(lever),
-      motion.mass};
+      solution.normal,
+      Eigen::Vector3d(0.0, 0.0, wall_velocity) - motion.velocity - motion.angular_velocity.cross(lever), motion.mass};
   WallForces forces;
   forces.contact =
       contact_force(context, *solution.constants, solution.overlap, solution.law.force, kinematics, dt, history);

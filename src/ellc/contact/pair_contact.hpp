@@ -57,17 +57,14 @@ struct WallPlane {
                                       const InteractionContext& context) noexcept;
 
 // A body against a wall, mirror-image convention: r̂^{I,J} = 2 r̂^I, the wall flat (κ = 0).
-[[nodiscard]] PairSolution solve_wall(const BodyRef& body, const WallPlane& wall, bool sphere,
-                                      ContactHistory& history, ContactCache& cache,
-                                      const InteractionContext& context) noexcept;
+[[nodiscard]] PairSolution solve_wall(const BodyRef& body, const WallPlane& wall, bool sphere, ContactHistory& history,
+                                      ContactCache& cache, const InteractionContext& context) noexcept;
 
 // The ellipsoid paths (pair_contact_ellipsoids.cpp), called by the two functions above.
-[[nodiscard]] PairSolution solve_ellipsoid_pair(const BodyRef& body_i, const BodyRef& body_j,
-                                                ContactHistory& history, ContactCache& cache,
-                                                const InteractionContext& context) noexcept;
-[[nodiscard]] PairSolution solve_ellipsoid_wall(const BodyRef& body, const WallPlane& wall,
-                                                ContactHistory& history, ContactCache& cache,
-                                                const InteractionContext& context) noexcept;
+[[nodiscard]] PairSolution solve_ellipsoid_pair(const BodyRef& body_i, const BodyRef& body_j, ContactHistory& history,
+                                                ContactCache& cache, const InteractionContext& context) noexcept;
+[[nodiscard]] PairSolution solve_ellipsoid_wall(const BodyRef& body, const WallPlane& wall, ContactHistory& history,
+                                                ContactCache& cache, const InteractionContext& context) noexcept;
 
 struct BodyMotion {
   const Eigen::Vector3d& velocity;
@@ -95,7 +92,7 @@ struct WallForces {
 
 // A touching body–wall contact; the wall moves along z at `wall_velocity` and does not turn.
 [[nodiscard]] WallForces wall_forces(const PairSolution& solution, const Eigen::Vector3d& centre,
-                                     const BodyMotion& motion, double wall_velocity,
-                                     const InteractionContext& context, double dt, ContactHistory& history) noexcept;
+                                     const BodyMotion& motion, double wall_velocity, const InteractionContext& context,
+                                     double dt, ContactHistory& history) noexcept;
 
 }  // namespace ellc

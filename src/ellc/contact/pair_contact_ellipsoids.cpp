@@ -34,8 +34,8 @@ PairSolution with_law(const NarrowPhaseResult& found, double mean_radius_sum, Co
     if (found.status == NarrowPhaseStatus::separated) solution.clearance = std::max(-found.geometry.overlap, 0.0);
     return solution;
   }
-  const NormalContact contact = normal_contact(found.geometry, context.material, mean_radius_sum,
-                                               context.model.hertz, context.model.law, history.max_overlap);
+  const NormalContact contact = normal_contact(found.geometry, context.material, mean_radius_sum, context.model.hertz,
+                                               context.model.law, history.max_overlap);
   cache.constants = contact.constants;
   solution.status = PairStatus::contact;
   solution.normal = found.geometry.normal;

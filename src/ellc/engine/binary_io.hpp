@@ -28,12 +28,16 @@ void get(std::istream& in, T& value) {
   if (!in) throw std::runtime_error("checkpoint ends early or cannot be read");
 }
 
-inline void put(std::ostream& out, const Eigen::Vector3d& v) { out.write(reinterpret_cast<const char*>(v.data()), 3 * sizeof(double)); }
+inline void put(std::ostream& out, const Eigen::Vector3d& v) {
+  out.write(reinterpret_cast<const char*>(v.data()), 3 * sizeof(double));
+}
 inline void get(std::istream& in, Eigen::Vector3d& v) {
   in.read(reinterpret_cast<char*>(v.data()), 3 * sizeof(double));
   if (!in) throw std::runtime_error("checkpoint ends early or cannot be read");
 }
-inline void put(std::ostream& out, const Eigen::Quaterniond& q) { out.write(reinterpret_cast<const char*>(q.coeffs().data()), 4 * sizeof(double)); }
+inline void put(std::ostream& out, const Eigen::Quaterniond& q) {
+  out.write(reinterpret_cast<const char*>(q.coeffs().data()), 4 * sizeof(double));
+}
 inline void get(std::istream& in, Eigen::Quaterniond& q) {
   in.read(reinterpret_cast<char*>(q.coeffs().data()), 4 * sizeof(double));
   if (!in) throw std::runtime_error("checkpoint ends early or cannot be read");
@@ -49,7 +53,8 @@ template <typename T>
 void get(std::istream& in, std::vector<T>& values) {
   std::uint64_t size = 0;
   get(in, size);
-  if (size > (std::uint64_t{1} << 34)) throw std::runtime_error("checkpoint is corrupt (array size " + std::to_string(size) + ")");
+  if (size > (std::uint64_t{1} << 34))
+    throw std::runtime_error("checkpoint is corrupt (array size " + std::to_string(size) + ")");
   values.resize(size);
   for (auto& value : values) get(in, value);
 }

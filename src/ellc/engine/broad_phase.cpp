@@ -222,8 +222,8 @@ double carry_over_history(std::vector<PairSlot>& previous, std::vector<PairSlot>
       next[n].cache = old_pair.cache;
     } else if (active) {
       // Plastic work and the spring's energy, both dissipated (the pair left the list while touching).
-      released_work += plastic_work(old_pair.cache.constants, old_pair.history.max_overlap) +
-                       old_pair.history.spring_energy();
+      released_work +=
+          plastic_work(old_pair.cache.constants, old_pair.history.max_overlap) + old_pair.history.spring_energy();
     }
   }
   return released_work;

@@ -14,7 +14,7 @@ namespace ellc::engine {
 // Positions must already lie in [0, lx) × [0, ly). Requires lx, ly ≥ 2 (2 R_max + skin) so
 // that the minimum image is the only image in range (checked by the scenario reader).
 [[nodiscard]] std::vector<PairSlot> find_candidate_pairs(const ParticleSet& particles, const Box& box, double skin,
-                                                       bool parallel = true);
+                                                         bool parallel = true);
 // The same into `pairs` (cleared first), reusing its storage: the engine keeps a spare list so
 // that a rebuild does not allocate (and page-fault in) a fresh one of ~250 bytes per pair.
 void find_candidate_pairs(const ParticleSet& particles, const Box& box, double skin, bool parallel,

@@ -7,9 +7,7 @@
 
 namespace ellc::engine {
 
-double ellipsoid_volume(const Eigen::Vector3d& axes) noexcept {
-  return 4.0 / 3.0 * std::numbers::pi * axes.prod();
-}
+double ellipsoid_volume(const Eigen::Vector3d& axes) noexcept { return 4.0 / 3.0 * std::numbers::pi * axes.prod(); }
 
 void ParticleSet::add(std::uint32_t particle_id, const Eigen::Vector3d& axes, double density,
                       const Eigen::Vector3d& centre, const Eigen::Quaterniond& rotation) {

@@ -15,17 +15,17 @@ namespace ellc::engine {
 
 struct ParticleSet {
   std::vector<std::uint32_t> id;
-  std::vector<Eigen::Vector3d> semi_axes;        // (a, b, c) along the body axes
+  std::vector<Eigen::Vector3d> semi_axes;  // (a, b, c) along the body axes
   std::vector<double> mass;
-  std::vector<Eigen::Vector3d> inertia;          // principal moments of inertia, body frame
-  std::vector<double> mean_radius;               // r̂ = (a b c)^{1/3}, paper eq. (50)
-  std::vector<double> bounding_radius;           // largest semi-axis
+  std::vector<Eigen::Vector3d> inertia;  // principal moments of inertia, body frame
+  std::vector<double> mean_radius;       // r̂ = (a b c)^{1/3}, paper eq. (50)
+  std::vector<double> bounding_radius;   // largest semi-axis
   std::vector<Eigen::Vector3d> position;
-  std::vector<Eigen::Quaterniond> orientation;   // body → world
+  std::vector<Eigen::Quaterniond> orientation;  // body → world
   std::vector<Eigen::Vector3d> velocity;
   std::vector<Eigen::Vector3d> angular_velocity;  // body frame (Euler's equations)
-  std::vector<Eigen::Vector3d> force;            // world frame, contacts only
-  std::vector<Eigen::Vector3d> torque;           // world frame
+  std::vector<Eigen::Vector3d> force;             // world frame, contacts only
+  std::vector<Eigen::Vector3d> torque;            // world frame
 
   [[nodiscard]] std::size_t size() const noexcept { return id.size(); }
   // Appends a particle at rest; mass and inertia follow from the density (ng/µm³).

@@ -23,8 +23,7 @@ namespace ellc::engine {
 }
 
 // dω/dt = I⁻¹ (τ − ω × I ω), all in the body frame (Euler's equations).
-[[nodiscard]] inline Eigen::Vector3d angular_acceleration(const Eigen::Vector3d& inertia,
-                                                          const Eigen::Vector3d& omega,
+[[nodiscard]] inline Eigen::Vector3d angular_acceleration(const Eigen::Vector3d& inertia, const Eigen::Vector3d& omega,
                                                           const Eigen::Vector3d& torque_body) noexcept {
   return (torque_body - omega.cross(inertia.cwiseProduct(omega))).cwiseQuotient(inertia);
 }

@@ -53,11 +53,11 @@ struct Wall {
 struct EngineSettings {
   ContactSettings contact;
   Box box;
-  double dt = 1e-3;                                     // µs
-  Eigen::Vector3d gravity = Eigen::Vector3d::Zero();    // µm/µs²
-  double drag_rate = 0.0;       // global viscous drag −γ m v (1/µs): settling only, 0 otherwise
-  double skin = 0.0;            // neighbour-list skin (µm); 0 → 0.2 of the mean bounding radius (simulation.cpp)
-  double max_speed = 1e3;       // µm/µs: above this a particle counts as runaway
+  double dt = 1e-3;                                   // µs
+  Eigen::Vector3d gravity = Eigen::Vector3d::Zero();  // µm/µs²
+  double drag_rate = 0.0;  // global viscous drag −γ m v (1/µs): settling only, 0 otherwise
+  double skin = 0.0;       // neighbour-list skin (µm); 0 → 0.2 of the mean bounding radius (simulation.cpp)
+  double max_speed = 1e3;  // µm/µs: above this a particle counts as runaway
   // Loops over fewer particles than this run on one thread (fork/join would cost more); the
   // results are the same either way. Tests set 0 to exercise the threads on small systems.
   std::size_t parallel_threshold = 512;

@@ -120,7 +120,8 @@ void Simulation::set_wall_position(int wall, double position) { walls_[wall].pos
 
 void Simulation::rebuild_neighbours() {
   wrap_positions(particles_, settings_.box);
-  find_candidate_pairs(particles_, settings_.box, skin_, particles_.size() > settings_.parallel_threshold, spare_pairs_);
+  find_candidate_pairs(particles_, settings_.box, skin_, particles_.size() > settings_.parallel_threshold,
+                       spare_pairs_);
   released_work_ += carry_over_history(pairs_, spare_pairs_);
   std::swap(pairs_, spare_pairs_);  // the old list's storage serves the next rebuild
   pair_results_.assign(pairs_.size(), PairResult{});
@@ -253,8 +254,8 @@ void Simulation::evaluate_walls_and_reset(std::size_t slot) {
     PairSolution solution;
     if (reach > 0.0) {
       const BodyRef body{p.semi_axes[slot], p.position[slot], p.orientation[slot], p.mean_radius[slot], shape};
-      solution = solve_wall(body, WallPlane{wall.position, wall.side}, is_sphere_[slot] != 0, history, cache,
-                            wall_context_);
+      solution =
+          solve_wall(body, WallPlane{wall.position, wall.side}, is_sphere_[slot] != 0, history, cache, wall_context_);
     }
     if (solution.status == PairStatus::failed) {
       result.failed = true;
@@ -266,7 +267,8 @@ void Simulation::evaluate_walls_and_reset(std::size_t slot) {
         result.released_work = ended.plastic_work;
         result.friction_dissipation = ended.spring_energy;
       }
-      if (solution.status == PairStatus::contact) result.contact = true;  // overlapping below δ_p: no force, history kept
+      if (solution.status == PairStatus::contact)
+        result.contact = true;  // overlapping below δ_p: no force, history kept
       reported = holds_something(result) ? 1 : 0;
       continue;
     }
@@ -414,10 +416,10 @@ void Simulation::report_runaway(std::size_t first_bad) const {
   const auto& p = particles_;
   const double limit = settings_.max_speed;
   const double speed = p.velocity[first_bad].norm();
-  const std::string what = std::isfinite(speed) && p.position[first_bad].allFinite()
-                               ? "runaway velocity " + std::to_string(speed) + " µm/µs (limit " +
-                                     std::to_string(limit) + ")"
-                               : "a non-finite position or velocity";
+  const std::string what =
+      std::isfinite(speed) && p.position[first_bad].allFinite()
+          ? "runaway velocity " + std::to_string(speed) + " µm/µs (limit " + std::to_string(limit) + ")"
+          : "a non-finite position or velocity";
   throw RunawayError("particle " + std::to_string(p.id[first_bad]) + " has " + what + " at step " +
                          std::to_string(step_) + " (t = " + std::to_string(time_) +
                          " µs); try a smaller time step or a lower wall speed",
@@ -429,7 +431,8 @@ double Simulation::kinetic_energy() const noexcept {
   const auto& p = particles_;
   for (std::size_t slot = 0; slot < p.size(); ++slot) {
     const Eigen::Vector3d& omega = p.angular_velocity[slot];
-    energy += 0.5 * p.mass[slot] * p.velocity[slot].squaredNorm() + 0.5 * omega.dot(p.inertia[slot].cwiseProduct(omega));
+    energy +=
+        0.5 * p.mass[slot] * p.velocity[slot].squaredNorm() + 0.5 * omega.dot(p.inertia[slot].cwiseProduct(omega));
   }
   return energy;
 }
@@ -518,7 +521,7 @@ void Simulation::for_each_contact(const std::function<void(const ContactView&)>&
     const bool spheres = is_sphere_[pair.i] != 0 && is_sphere_[pair.j] != 0;
     const auto& n = pair.history.warm_normal;
     view.normal = !spheres && pair.history.warm_valid != 0.0 ? Eigen::Vector3d(n[0], n[1], n[2]).normalized()
-                                                            : (view.other - view.centre_i).normalized();
+                                                             : (view.other - view.centre_i).normalized();
     view.force = pair_results_[index].force_on_j;
     view.normal_force = view.force.dot(view.normal);
     view.overlap = pair.cache.last_overlap;

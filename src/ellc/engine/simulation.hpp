@@ -81,19 +81,19 @@ struct ValidityReport {
 // One contact of the last force evaluation, for outputs (Simulation::for_each_contact): the
 // contacts ValidityReport and ContactCounts count, a pair of particles or a particle on a wall.
 struct ContactView {
-  int wall = -1;          // −1: a pair; kBottomWall or kTopWall: particle i against that wall
-  std::uint32_t i = 0;    // particle slot (of a pair: the smaller id)
-  std::uint32_t j = 0;    // the other particle's slot (pairs only)
+  int wall = -1;        // −1: a pair; kBottomWall or kTopWall: particle i against that wall
+  std::uint32_t i = 0;  // particle slot (of a pair: the smaller id)
+  std::uint32_t j = 0;  // the other particle's slot (pairs only)
   Eigen::Vector3d centre_i = Eigen::Vector3d::Zero();
   // Pairs: the centre of j's periodic image (j's centre + the pair's shift); walls: the contact point.
   Eigen::Vector3d other = Eigen::Vector3d::Zero();
   Eigen::Vector3d normal = Eigen::Vector3d::UnitZ();  // unit, i → j (particle → wall)
   Eigen::Vector3d force = Eigen::Vector3d::Zero();    // on j (pairs) or on the wall, µN
-  double normal_force = 0.0;  // force · normal, µN (> 0 presses the bodies apart)
-  double overlap = 0.0;       // δ of the last evaluation, µm
-  double max_overlap = 0.0;   // δ_*, µm
+  double normal_force = 0.0;                          // force · normal, µN (> 0 presses the bodies apart)
+  double overlap = 0.0;                               // δ of the last evaluation, µm
+  double max_overlap = 0.0;                           // δ_*, µm
   Regime regime = Regime::separated;
-  double size_ratio = 0.0;    // c_c/r̂ as ValidityReport defines it (contact_size_ratio)
+  double size_ratio = 0.0;  // c_c/r̂ as ValidityReport defines it (contact_size_ratio)
 };
 
 class Simulation {
@@ -203,7 +203,7 @@ class Simulation {
   InteractionContext wall_context_;  // particle–wall contacts (the walls' friction)
   std::vector<char> is_sphere_;
   std::vector<Eigen::Vector3d> omega_world_;
-  std::vector<Ellipsoid> shapes_;  // posed ellipsoids of this step (non-spheres only)
+  std::vector<Ellipsoid> shapes_;                    // posed ellipsoids of this step (non-spheres only)
   std::vector<Eigen::Vector3d> reference_position_;  // at the last neighbour-list build
   // Proven separation (docs/engine.md, "Pairs proven apart"): travel_[k] bounds how far any point
   // of particle k has moved since the last neighbour-list build; a pair found apart with clearance

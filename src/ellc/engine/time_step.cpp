@@ -9,8 +9,7 @@ namespace ellc::engine {
 
 double rayleigh_time(double radius, double density, const Material& material) noexcept {
   const double shear_modulus = material.youngs_modulus / (2.0 * (1.0 + material.poisson_ratio));
-  return std::numbers::pi * radius * std::sqrt(density / shear_modulus) /
-         (0.1631 * material.poisson_ratio + 0.8766);
+  return std::numbers::pi * radius * std::sqrt(density / shear_modulus) / (0.1631 * material.poisson_ratio + 0.8766);
 }
 
 double stable_time_step(const ParticleSet& particles, double density, const Material& material,

@@ -6,8 +6,8 @@
 
 namespace ellc {
 
-ContactFunctionResult perram_wertheim(const Ellipsoid& body_i, const Ellipsoid& body_j,
-                                      bool stop_when_separated, double lambda_tolerance) noexcept {
+ContactFunctionResult perram_wertheim(const Ellipsoid& body_i, const Ellipsoid& body_j, bool stop_when_separated,
+                                      double lambda_tolerance) noexcept {
   ContactFunctionResult result;
   const Eigen::Vector3d r = body_j.center() - body_i.center();
   const double distance = r.norm();
@@ -49,8 +49,10 @@ ContactFunctionResult perram_wertheim(const Ellipsoid& body_i, const Ellipsoid& 
       result.converged = true;
       return result;
     }
-    if (slope > 0.0) lower = lambda;
-    else upper = lambda;
+    if (slope > 0.0)
+      lower = lambda;
+    else
+      upper = lambda;
     double next = curvature < 0.0 ? lambda - slope / curvature : 0.5 * (lower + upper);
     if (!(next > lower && next < upper)) next = 0.5 * (lower + upper);  // Newton left the bracket: bisect
     const bool done = std::abs(next - lambda) <= lambda_tolerance || upper - lower <= lambda_tolerance;

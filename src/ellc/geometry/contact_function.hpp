@@ -21,8 +21,8 @@
 namespace ellc {
 
 struct ContactFunctionResult {
-  double value = 0.0;   // F(λ) at the last λ (= F* when converged)
-  double lambda = 0.5;  // λ
+  double value = 0.0;                                 // F(λ) at the last λ (= F* when converged)
+  double lambda = 0.5;                                // λ
   Eigen::Vector3d normal = Eigen::Vector3d::UnitX();  // unit C(λ)⁻¹ r, from I towards J
   int iterations = 0;
   bool separated = false;  // F(λ) > 1 was seen: `normal` is a separating axis

@@ -9,7 +9,8 @@ namespace {
 
 // Gives `side` the principal directions of `partner`, projected on the tangent plane of the
 // outward normal `outward`; keeps its own if the projection degenerates.
-void adopt_directions(SurfaceCurvature& side, const SurfaceCurvature& partner, const Eigen::Vector3d& outward) noexcept {
+void adopt_directions(SurfaceCurvature& side, const SurfaceCurvature& partner,
+                      const Eigen::Vector3d& outward) noexcept {
   const Eigen::Vector3d projected = partner.direction_1 - partner.direction_1.dot(outward) * outward;
   const double length = projected.norm();
   if (!(length > 1e-12)) return;

@@ -10,12 +10,12 @@
 namespace ellc {
 
 struct ContactGeometry {
-  Eigen::Vector3d point = Eigen::Vector3d::Zero();     // midpoint of the two surface points
-  Eigen::Vector3d normal = Eigen::Vector3d::UnitX();   // unit, from I towards J
-  double overlap = 0.0;                                // δ = (p_I − p_J)·n; > 0 in contact
+  Eigen::Vector3d point = Eigen::Vector3d::Zero();            // midpoint of the two surface points
+  Eigen::Vector3d normal = Eigen::Vector3d::UnitX();          // unit, from I towards J
+  double overlap = 0.0;                                       // δ = (p_I − p_J)·n; > 0 in contact
   Eigen::Vector3d surface_point_i = Eigen::Vector3d::Zero();  // on I, outward normal +n
   Eigen::Vector3d surface_point_j = Eigen::Vector3d::Zero();  // on J, outward normal −n
-  RelativeCurvature relative;    // A ≤ B of eq. (5): all the law needs of the curvatures
+  RelativeCurvature relative;                                 // A ≤ B of eq. (5): all the law needs of the curvatures
   // Each side's curvatures and the angle between them (for reporting; the narrow phase leaves
   // them at these defaults when NarrowPhaseOptions::surface_curvatures is off).
   SurfaceCurvature curvature_i;  // of I at surface_point_i

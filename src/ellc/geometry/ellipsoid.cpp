@@ -2,7 +2,6 @@
 
 #include <numbers>
 
-
 namespace ellc {
 
 namespace {
@@ -23,8 +22,7 @@ Eigen::Matrix3d rotated_diagonal(const Eigen::Matrix3d& rotation, const Eigen::V
 
 }  // namespace
 
-Ellipsoid::Ellipsoid(const Eigen::Vector3d& semi_axes, const Pose& pose) noexcept
-    : semi_axes_(semi_axes), pose_(pose) {
+Ellipsoid::Ellipsoid(const Eigen::Vector3d& semi_axes, const Pose& pose) noexcept : semi_axes_(semi_axes), pose_(pose) {
   const double quaternion_norm = pose_.orientation.norm();
   const bool quaternion_ok = std::isfinite(quaternion_norm) && quaternion_norm > 0.0;
   if (quaternion_ok) {
@@ -47,7 +45,6 @@ Eigen::Vector3d Ellipsoid::support_point(const Eigen::Vector3d& direction) const
 Eigen::Vector3d Ellipsoid::surface_point_with_normal(const Eigen::Vector3d& world_normal) const noexcept {
   return support_point(world_normal);  // scale-free: S n / sqrt(nᵀ S n) does not depend on |n|
 }
-
 
 SurfaceCurvature curvature_from_shape_operator(double w11, double w12, double w22,
                                                const geometry_detail::TangentFrame& frame,
@@ -80,8 +77,10 @@ SurfaceCurvature Ellipsoid::curvature_with_normal(const Eigen::Vector3d& world_n
 SurfaceCurvature Ellipsoid::curvature_at(const Eigen::Vector3d& world_surface_point) const noexcept {
   Eigen::Vector3d body_point = to_body(world_surface_point);
   const double level = body_point.dot(shape_diagonal_.cwiseProduct(body_point));
-  if (level > 0.0) body_point /= std::sqrt(level);  // radial projection onto the surface
-  else body_point = semi_axes_.x() * Eigen::Vector3d::UnitX();  // the centre itself: any point will do
+  if (level > 0.0)
+    body_point /= std::sqrt(level);  // radial projection onto the surface
+  else
+    body_point = semi_axes_.x() * Eigen::Vector3d::UnitX();  // the centre itself: any point will do
   const Eigen::Vector3d gradient = rotation_ * shape_diagonal_.cwiseProduct(body_point);
   const double gradient_norm = gradient.norm();
   const Eigen::Vector3d normal = gradient / gradient_norm;

@@ -57,8 +57,8 @@ struct AxisAlignedBox {
 // κ1 ≥ κ2 and the principal directions from a shape operator given by its entries
 // W₁₁, W₁₂, W₂₂ in the tangent frame (t₁, t₂) of `outward_normal` (direction_2 = n × direction_1).
 [[nodiscard]] SurfaceCurvature curvature_from_shape_operator(double w11, double w12, double w22,
-                                                           const geometry_detail::TangentFrame& frame,
-                                                           const Eigen::Vector3d& outward_normal) noexcept;
+                                                             const geometry_detail::TangentFrame& frame,
+                                                             const Eigen::Vector3d& outward_normal) noexcept;
 
 class Ellipsoid {
  public:

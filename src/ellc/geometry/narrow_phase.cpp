@@ -58,7 +58,8 @@ struct TangentForms {
   Lanes q11, q12, q22;
 };
 
-EIGEN_ALWAYS_INLINE TangentForms tangent_forms(const SymmetricLanes& matrices, const geometry_detail::TangentFrame& frame) noexcept {
+EIGEN_ALWAYS_INLINE TangentForms tangent_forms(const SymmetricLanes& matrices,
+                                               const geometry_detail::TangentFrame& frame) noexcept {
   const Eigen::Vector3d& t1 = frame.t1;
   const Eigen::Vector3d& t2 = frame.t2;
   Lanes x1, y1, z1, x2, y2, z2;
@@ -105,7 +106,8 @@ struct Hessian2 {
   double h22;
 };
 
-EIGEN_ALWAYS_INLINE Hessian2 reach_hessian(const PairData& pair, const AlongNormal& at, const geometry_detail::TangentFrame& frame) noexcept {
+EIGEN_ALWAYS_INLINE Hessian2 reach_hessian(const PairData& pair, const AlongNormal& at,
+                                           const geometry_detail::TangentFrame& frame) noexcept {
   const TangentForms forms = tangent_forms(pair.shapes, frame);
   const Eigen::Vector3d& t1 = frame.t1;
   const Eigen::Vector3d& t2 = frame.t2;
@@ -248,11 +250,12 @@ void mark_solved(const Ellipsoid& body_i, const Ellipsoid& body_j, const AlongNo
 
 }  // namespace
 
-NarrowPhaseResult ellipsoid_contact(const Ellipsoid& body_i, const Ellipsoid& body_j,
-                                    const NarrowPhaseWarmStart* warm, const NarrowPhaseOptions& options) noexcept {
+NarrowPhaseResult ellipsoid_contact(const Ellipsoid& body_i, const Ellipsoid& body_j, const NarrowPhaseWarmStart* warm,
+                                    const NarrowPhaseOptions& options) noexcept {
   NarrowPhaseResult result;  // status failed until proven otherwise
   if (!body_i.valid() || !body_j.valid()) return result;
-  const PairData pair{SymmetricLanes(body_i.inverse_shape(), body_j.inverse_shape()), body_j.center() - body_i.center()};
+  const PairData pair{SymmetricLanes(body_i.inverse_shape(), body_j.inverse_shape()),
+                      body_j.center() - body_i.center()};
   const double distance = pair.offset.norm();
   auto centre_line = [&]() -> Eigen::Vector3d {
     return distance > 0.0 ? Eigen::Vector3d(pair.offset * (1.0 / distance)) : body_i.rotation().col(0);

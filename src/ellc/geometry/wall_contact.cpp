@@ -23,7 +23,8 @@ NarrowPhaseResult wall_contact(const Ellipsoid& body, const Plane& wall) noexcep
   }
   result.status = NarrowPhaseStatus::contact;
   geometry.curvature_i = body.curvature_with_normal(into_wall);
-  geometry.curvature_j = SurfaceCurvature{0.0, 0.0, geometry.curvature_i.direction_1, -geometry.curvature_i.direction_2};
+  geometry.curvature_j =
+      SurfaceCurvature{0.0, 0.0, geometry.curvature_i.direction_1, -geometry.curvature_i.direction_2};
   pair_principal_directions(geometry, into_wall);
   geometry.relative = relative_curvature(geometry.curvature_i.principal(), {}, 0.0);  // a flat wall
   return result;

@@ -81,10 +81,9 @@ double log_expm1_small(double x, double log_x) noexcept {
   const double y2 = 0.25 * x * x;
   const double series =
       y2 * (1.0 / 6.0 +
-            y2 * (-1.0 / 180.0 +
-                  y2 * (1.0 / 2835.0 +
-                        y2 * (-1.0 / 37800.0 +
-                              y2 * (1.0 / 467775.0 + y2 * (-691.0 / 3831077250.0 + y2 * (2.0 / 127702575.0)))))));
+            y2 * (-1.0 / 180.0 + y2 * (1.0 / 2835.0 + y2 * (-1.0 / 37800.0 +
+                                                            y2 * (1.0 / 467775.0 + y2 * (-691.0 / 3831077250.0 +
+                                                                                         y2 * (2.0 / 127702575.0)))))));
   return log_x + 0.5 * x + series;
 }
 
@@ -147,7 +146,7 @@ RelativeCurvature relative_curvature(PrincipalCurvatures body_i, PrincipalCurvat
 
 RelativeCurvature relative_curvature_from_tensor(double sum_11, double sum_12, double sum_22) noexcept {
   const double half_split = 0.5 * (sum_11 - sum_22);
-  const double sum = 0.5 * (sum_11 + sum_22);                                        // A + B = ½ tr W
+  const double sum = 0.5 * (sum_11 + sum_22);                                      // A + B = ½ tr W
   const double difference = std::sqrt(half_split * half_split + sum_12 * sum_12);  // B − A
   return {0.5 * (sum - difference), 0.5 * (sum + difference)};
 }
@@ -169,8 +168,8 @@ HertzContact hertz_contact(const HertzShape& shape, double effective_modulus, do
   contact.semi_axis_minor = radius * axis_stretch;
   contact.peak_pressure =
       2.0 * effective_modulus * radius / (kPi * shape.equivalent_radius * shape.f1 * shape.f1 * shape.f1);  // eq. (2)
-  contact.force = (4.0 / 3.0) * effective_modulus * std::sqrt(shape.equivalent_radius) * overlap *
-                  std::sqrt(overlap) / (shape.f2 * std::sqrt(shape.f2));  // eq. (10)
+  contact.force = (4.0 / 3.0) * effective_modulus * std::sqrt(shape.equivalent_radius) * overlap * std::sqrt(overlap) /
+                  (shape.f2 * std::sqrt(shape.f2));  // eq. (10)
   return contact;
 }
 

@@ -143,8 +143,9 @@ std::optional<std::vector<long>> TableReader::optional_integers(std::string_view
 
 std::vector<double> TableReader::numbers(std::string_view key, std::size_t required_size) {
   auto values = optional_numbers(key, required_size);
-  if (!values) fail(key, "missing", required_size ? "an array of " + std::to_string(required_size) + " numbers"
-                                                  : "a non-empty array of numbers");
+  if (!values)
+    fail(key, "missing",
+         required_size ? "an array of " + std::to_string(required_size) + " numbers" : "a non-empty array of numbers");
   return *values;
 }
 
@@ -211,8 +212,8 @@ toml::table parse_toml_text(std::string_view text, const std::string& source) {
     return toml::parse(text, source);
   } catch (const toml::parse_error& error) {
     std::ostringstream out;
-    out << "not valid TOML at line " << error.source().begin.line << ", column " << error.source().begin.column
-        << ": " << error.description();
+    out << "not valid TOML at line " << error.source().begin.line << ", column " << error.source().begin.column << ": "
+        << error.description();
     throw InputError(source, out.str());
   }
 }

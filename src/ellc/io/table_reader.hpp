@@ -24,8 +24,8 @@ class TableReader {
   [[nodiscard]] double number(std::string_view key);
   [[nodiscard]] std::optional<double> optional_number(std::string_view key);
   [[nodiscard]] double number_or(std::string_view key, double fallback);
-  [[nodiscard]] double positive(std::string_view key);            // > 0
-  [[nodiscard]] double non_negative(std::string_view key);        // ≥ 0
+  [[nodiscard]] double positive(std::string_view key);      // > 0
+  [[nodiscard]] double non_negative(std::string_view key);  // ≥ 0
   [[nodiscard]] long integer_at_least(std::string_view key, long minimum, std::optional<long> fallback = {});
   [[nodiscard]] bool boolean_or(std::string_view key, bool fallback);
   [[nodiscard]] std::vector<double> numbers(std::string_view key, std::size_t required_size = 0);

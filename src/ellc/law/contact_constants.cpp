@@ -63,8 +63,9 @@ std::string validation_error(const ContactConstants& c) {
     }
   }
   if (!std::isfinite(c.lambda_max) || c.lambda_max < c.yield_pressure_factor)
-    out << "lambda_max = " << c.lambda_max << " (from the [model] fit m, o, p): expected a finite number >= "
-        << c.yield_pressure_factor << " (the pressure cannot fall after first yield)";
+    out << "lambda_max = " << c.lambda_max
+        << " (from the [model] fit m, o, p): expected a finite number >= " << c.yield_pressure_factor
+        << " (the pressure cannot fall after first yield)";
   else if (!std::isfinite(c.epsilon_max) || c.epsilon_max < 1.0)
     out << "epsilon_max = " << c.epsilon_max << " (from the [model] fit s, t, u): expected a finite number >= 1";
   return out.str();

@@ -12,23 +12,23 @@
 namespace ellc {
 
 struct ContactConstants {
-  double effective_modulus = 0.0;             // E_e, eq. (3)
-  double yield_stress = 0.0;                  // Y
-  double equivalent_radius = 0.0;             // R_e, eq. (6)
-  double eccentricity_sq = 0.0;               // e², eq. (7)
-  double f1 = 1.0;                            // eq. (4)
-  double f2 = 1.0;                            // eq. (4)
+  double effective_modulus = 0.0;              // E_e, eq. (3)
+  double yield_stress = 0.0;                   // Y
+  double equivalent_radius = 0.0;              // R_e, eq. (6)
+  double eccentricity_sq = 0.0;                // e², eq. (7)
+  double f1 = 1.0;                             // eq. (4)
+  double f2 = 1.0;                             // eq. (4)
   double contact_radius_sq_per_overlap = 0.0;  // c_c²/δ = R_e f1²/f2, eq. (9)
-  double hertz_coefficient = 0.0;             // F_H/δ^{3/2} = (4/3) E_e sqrt(R_e) f2^{-3/2}, eq. (10)
-  double yield_pressure = 0.0;                // p_Y = 1.6 Y
-  double yield_contact_radius = 0.0;          // c_Y = p_Y π R_e f1³ / (2 E_e), from eq. (2)
-  double yield_overlap = 0.0;                 // δ_Y = c_Y² f2 / (R_e f1²), eq. (9)
-  double yield_force = 0.0;                   // F_pY = (2/3) π c_Y² p_Y
-  double lambda_max = 0.0;                    // eq. (52)
-  double epsilon_max = 0.0;                   // eq. (52)
-  double transition_exponent = 0.0;           // n, eq. (28)
-  double yield_pressure_factor = 1.6;         // λ at first yield
-  double plastic_limit_overlap = 0.0;         // δ_max = ε_max² δ_Y, eq. (30)
+  double hertz_coefficient = 0.0;              // F_H/δ^{3/2} = (4/3) E_e sqrt(R_e) f2^{-3/2}, eq. (10)
+  double yield_pressure = 0.0;                 // p_Y = 1.6 Y
+  double yield_contact_radius = 0.0;           // c_Y = p_Y π R_e f1³ / (2 E_e), from eq. (2)
+  double yield_overlap = 0.0;                  // δ_Y = c_Y² f2 / (R_e f1²), eq. (9)
+  double yield_force = 0.0;                    // F_pY = (2/3) π c_Y² p_Y
+  double lambda_max = 0.0;                     // eq. (52)
+  double epsilon_max = 0.0;                    // eq. (52)
+  double transition_exponent = 0.0;            // n, eq. (28)
+  double yield_pressure_factor = 1.6;          // λ at first yield
+  double plastic_limit_overlap = 0.0;          // δ_max = ε_max² δ_Y, eq. (30)
 };
 
 // `mean_radius_sum` is r̂^{I,J} = r̂^I + r̂^J of eq. (50).
@@ -39,9 +39,8 @@ struct ContactConstants {
 // The usual path: principal curvatures of both bodies and the angle α between their κ1
 // directions → A, B (eq. 5) → Hertz shape → constants.
 [[nodiscard]] ContactConstants make_contact_constants(const ContactMaterial& material, PrincipalCurvatures body_i,
-                                                      PrincipalCurvatures body_j, double alpha,
-                                                      double mean_radius_sum, HertzMode mode,
-                                                      const LawParameters& parameters = {}) noexcept;
+                                                      PrincipalCurvatures body_j, double alpha, double mean_radius_sum,
+                                                      HertzMode mode, const LawParameters& parameters = {}) noexcept;
 
 // The Hertz shape the constants were built from (R_e, e², f1, f2).
 [[nodiscard]] HertzShape hertz_shape_of(const ContactConstants& constants) noexcept;

@@ -37,14 +37,14 @@ struct LawResult {
 
 // Derived unloading branch for a history δ_* > δ_Y (docs/model.md §4).
 struct UnloadingBranch {
-  double loading_force = 0.0;             // F_*,pmax: the loading force at δ_* (eq. 25 or 31)
-  double fully_plastic_force = 0.0;       // F_*,pY = π p_Y (c_*² − c_Y²) + F_pY
-  double hertz_force = 0.0;               // F_*,H = F_H(δ_*)
-  double plastic_radius = 0.0;            // R_e,p = F_*,H R_e / F_*,pY, eq. (44)
-  double plastic_overlap = 0.0;           // δ_p = δ_* (1 − R_e/R_e,p), eq. (34)
-  double force_ratio = 1.0;               // β = F_*,pmax / F_*,pY, eq. (46)
-  double unloading_radius = 0.0;          // R_e,pmax = β² R_e,p, eq. (48)
-  double unloading_coefficient = 0.0;     // (4/3) E_e sqrt(R_e,pmax) f2^{-3/2}, eq. (49)
+  double loading_force = 0.0;          // F_*,pmax: the loading force at δ_* (eq. 25 or 31)
+  double fully_plastic_force = 0.0;    // F_*,pY = π p_Y (c_*² − c_Y²) + F_pY
+  double hertz_force = 0.0;            // F_*,H = F_H(δ_*)
+  double plastic_radius = 0.0;         // R_e,p = F_*,H R_e / F_*,pY, eq. (44)
+  double plastic_overlap = 0.0;        // δ_p = δ_* (1 − R_e/R_e,p), eq. (34)
+  double force_ratio = 1.0;            // β = F_*,pmax / F_*,pY, eq. (46)
+  double unloading_radius = 0.0;       // R_e,pmax = β² R_e,p, eq. (48)
+  double unloading_coefficient = 0.0;  // (4/3) E_e sqrt(R_e,pmax) f2^{-3/2}, eq. (49)
 };
 
 namespace law_detail {
@@ -63,10 +63,10 @@ inline constexpr double kPi = std::numbers::pi;
 [[nodiscard]] inline double transition_lambda(const ContactConstants& c, double contact_radius) noexcept {
   // Fraction of the transition still ahead: 1 at c_Y, 0 at c_max. Clamped because c_c at δ_max
   // can round to a hair above ε_max c_Y, and a negative base would give pow() a NaN.
-  const double progress_left = (c.epsilon_max * c.yield_contact_radius - contact_radius) /
-                               ((c.epsilon_max - 1.0) * c.yield_contact_radius);
-  return c.lambda_max - (c.lambda_max - c.yield_pressure_factor) *
-                            std::pow(std::fmax(progress_left, 0.0), c.transition_exponent);
+  const double progress_left =
+      (c.epsilon_max * c.yield_contact_radius - contact_radius) / ((c.epsilon_max - 1.0) * c.yield_contact_radius);
+  return c.lambda_max -
+         (c.lambda_max - c.yield_pressure_factor) * std::pow(std::fmax(progress_left, 0.0), c.transition_exponent);
 }
 
 // The loading envelope F(δ) for monotonic loading, and the regime it is in.
@@ -79,8 +79,7 @@ struct LoadingPoint {
   const double contact_radius_sq = c.contact_radius_sq_per_overlap * overlap;  // eq. (9)
   if (overlap <= c.plastic_limit_overlap) {
     const double lambda = transition_lambda(c, std::sqrt(contact_radius_sq));
-    return {law_detail::truncated_hertz_force(c, lambda * c.yield_stress, contact_radius_sq),
-            Regime::elastic_plastic};
+    return {law_detail::truncated_hertz_force(c, lambda * c.yield_stress, contact_radius_sq), Regime::elastic_plastic};
   }
   return {law_detail::truncated_hertz_force(c, c.lambda_max * c.yield_stress, contact_radius_sq),
           Regime::fully_plastic};
@@ -121,8 +120,7 @@ struct LoadingPoint {
   const UnloadingBranch branch = unloading_branch(c, max_overlap);
   const double elastic_overlap = overlap - branch.plastic_overlap;  // δ_UL, eq. (32)
   if (elastic_overlap <= 0.0) return {0.0, max_overlap, Regime::separated};
-  return {branch.unloading_coefficient * law_detail::pow_three_halves(elastic_overlap), max_overlap,
-          Regime::unloading};
+  return {branch.unloading_coefficient * law_detail::pow_three_halves(elastic_overlap), max_overlap, Regime::unloading};
 }
 
 // The elastic curve F = coefficient · x^{3/2} the contact is on, x = δ − offset: Hertz (eq. 10)
@@ -140,7 +138,8 @@ struct ElasticBranch {
                                                   double max_overlap) noexcept {
   if (overlap >= max_overlap || max_overlap <= c.yield_overlap) return {c.hertz_coefficient, overlap, 1.0};
   const UnloadingBranch branch = unloading_branch(c, max_overlap);
-  return {branch.unloading_coefficient, overlap - branch.plastic_overlap, branch.unloading_radius / c.equivalent_radius};
+  return {branch.unloading_coefficient, overlap - branch.plastic_overlap,
+          branch.unloading_radius / c.equivalent_radius};
 }
 
 }  // namespace ellc

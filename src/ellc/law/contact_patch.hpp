@@ -11,15 +11,18 @@
 namespace ellc {
 
 struct ContactPatch {
-  double semi_axis_major = 0.0;  // a_c
-  double semi_axis_minor = 0.0;  // b_c
-  double field_peak_pressure = 0.0;  // p0 of the elliptic (Hertz) field over the ellipse
+  double semi_axis_major = 0.0;                                   // a_c
+  double semi_axis_minor = 0.0;                                   // b_c
+  double field_peak_pressure = 0.0;                               // p0 of the elliptic (Hertz) field over the ellipse
   double pressure_cap = std::numeric_limits<double>::infinity();  // plateau p_λ; ∞ when elastic
   // Peak of the actual pressure: min(p0, cap).
-  [[nodiscard]] double peak_pressure() const noexcept { return field_peak_pressure < pressure_cap ? field_peak_pressure : pressure_cap; }
+  [[nodiscard]] double peak_pressure() const noexcept {
+    return field_peak_pressure < pressure_cap ? field_peak_pressure : pressure_cap;
+  }
 };
 
-[[nodiscard]] inline ContactPatch contact_patch(const ContactConstants& c, double overlap, double max_overlap) noexcept {
+[[nodiscard]] inline ContactPatch contact_patch(const ContactConstants& c, double overlap,
+                                                double max_overlap) noexcept {
   ContactPatch patch;
   const LawResult result = evaluate_contact(c, overlap, max_overlap);
   HertzShape shape = hertz_shape_of(c);

@@ -25,9 +25,10 @@ std::string validation_error(const LawParameters& parameters) {
   const struct {
     const char* name;
     double value;
-  } all[] = {{"m", fit.lambda_amplitude},      {"o", fit.lambda_rate},         {"p", fit.lambda_offset},
-             {"s", fit.epsilon_amplitude},     {"t", fit.epsilon_rate},        {"u", fit.epsilon_offset},
-             {"n", fit.transition_exponent},   {"yield_pressure_factor", parameters.yield_pressure_factor}};
+  } all[] = {{"m", fit.lambda_amplitude},    {"o", fit.lambda_rate},
+             {"p", fit.lambda_offset},       {"s", fit.epsilon_amplitude},
+             {"t", fit.epsilon_rate},        {"u", fit.epsilon_offset},
+             {"n", fit.transition_exponent}, {"yield_pressure_factor", parameters.yield_pressure_factor}};
   for (const auto& [name, value] : all) {
     if (!std::isfinite(value)) {
       std::ostringstream out;

@@ -13,9 +13,9 @@ struct TransitionFit {
   double lambda_rate = -4.62;      // o
   double lambda_offset = 2.42;     // p
   // ε_max = s exp(t R_e/r̂) + u, eq. (52); defaults eq. (53).
-  double epsilon_amplitude = 8.19;  // s
-  double epsilon_rate = -6.14;      // t
-  double epsilon_offset = 1.14;     // u
+  double epsilon_amplitude = 8.19;   // s
+  double epsilon_rate = -6.14;       // t
+  double epsilon_offset = 1.14;      // u
   double transition_exponent = 1.8;  // n of eq. (28)
 
   [[nodiscard]] double lambda_max(double radius_ratio) const noexcept;   // eq. (52)

@@ -1,8 +1,8 @@
 #include "ellc/material/material.hpp"
 
 #include <algorithm>
-#include <cmath>
 #include <charconv>
+#include <cmath>
 
 namespace ellc {
 

@@ -34,6 +34,7 @@ struct Checkpoint {
 
 // Throws InputError for a file that cannot be read, is no checkpoint, or comes from another
 // scenario. `settings` supplies what the stored state does not hold (material, box, ...).
-[[nodiscard]] Checkpoint read_checkpoint(const std::string& path, const Scenario& scenario, engine::EngineSettings settings);
+[[nodiscard]] Checkpoint read_checkpoint(const std::string& path, const Scenario& scenario,
+                                         engine::EngineSettings settings);
 
 }  // namespace ellc::scenario

@@ -75,8 +75,7 @@ EnergyBalance EnergyLedger::balance(const Simulation& sim) const noexcept {
   balance.gravity_work = state_.gravity_work;
   balance.now = energy_terms(sim);
   balance.drag_dissipation = state_.drag_dissipation;
-  balance.residual =
-      balance.work() - (balance.now.sum() - state_.at_start.sum() + balance.drag_dissipation);
+  balance.residual = balance.work() - (balance.now.sum() - state_.at_start.sum() + balance.drag_dissipation);
   return balance;
 }
 

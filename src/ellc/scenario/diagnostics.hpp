@@ -45,9 +45,9 @@ struct EnergyTerms {
 struct EnergyBalance {
   double work_bottom_plate = 0.0;  // Simulation::wall_work
   double work_top_plate = 0.0;
-  double gravity_work = 0.0;       // Σ m g·Δx (settling; calendering gravity)
-  EnergyTerms now;                 // the engine's terms, as reported
-  double drag_dissipation = 0.0;   // the settling's viscous drag
+  double gravity_work = 0.0;      // Σ m g·Δx (settling; calendering gravity)
+  EnergyTerms now;                // the engine's terms, as reported
+  double drag_dissipation = 0.0;  // the settling's viscous drag
   // work − (now − at the start of the run, + drag): the terms the packing started with (energy
   // of initial overlaps or velocities) are subtracted, so that they show no residual.
   double residual = 0.0;

@@ -267,8 +267,8 @@ void write_ensemble_summary_text(std::ostream& out, const EnsembleResult& result
   out << "# ellc dem ensemble summary: " << result.source << "\n"
       << "# one run per packing seed, each with its outputs in seed_<seed>/ (docs/engine.md, \"Ensembles over "
          "packing seeds\")\n"
-      << "members = " << result.members.size() << "\nfinished = " << finished
-      << "\nfailed = " << result.failed_count() << "\nseeds =";
+      << "members = " << result.members.size() << "\nfinished = " << finished << "\nfailed = " << result.failed_count()
+      << "\nseeds =";
   for (const EnsembleMember& member : result.members) out << ' ' << member.seed;
   out << "\n";
   for (const EnsembleMember& member : result.members) {
@@ -284,8 +284,8 @@ void write_ensemble_summary_text(std::ostream& out, const EnsembleResult& result
   std::size_t width = 8;
   for (const FigureStatistics& figure : result.statistics) width = std::max(width, figure.name.size());
   char line[512];
-  std::snprintf(line, sizeof line, "# %-*s %5s %16s %16s %16s %16s %16s\n", static_cast<int>(width - 2), "quantity", "n",
-                "mean", "sd", "standard_error", "min", "max");
+  std::snprintf(line, sizeof line, "# %-*s %5s %16s %16s %16s %16s %16s\n", static_cast<int>(width - 2), "quantity",
+                "n", "mean", "sd", "standard_error", "min", "max");
   out << line;
   if (result.statistics.empty()) out << "# (none: no member finished)\n";
   for (const FigureStatistics& f : result.statistics) {

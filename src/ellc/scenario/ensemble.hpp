@@ -84,8 +84,8 @@ struct EnsembleOptions {
 };
 
 struct EnsembleResult {
-  std::string source;     // the scenario file
-  std::string directory;  // DIR
+  std::string source;                        // the scenario file
+  std::string directory;                     // DIR
   std::vector<EnsembleMember> members;       // in seed order
   std::vector<FigureStatistics> statistics;  // over the finished members
   [[nodiscard]] std::size_t finished_count() const noexcept;

@@ -124,7 +124,8 @@ ParticleSet generate_packing(const PackingSpec& spec, const Box& box, double flo
     Candidate& particle = drawn[index];
     for (int attempt = 0;; ++attempt) {
       if (attempt > 0 && attempt % kAttempts == 0) height *= 1.05;  // region too full: extend it upward
-      if (attempt > 200 * kAttempts) throw std::runtime_error("packing generation: cannot place particle " + std::to_string(index));
+      if (attempt > 200 * kAttempts)
+        throw std::runtime_error("packing generation: cannot place particle " + std::to_string(index));
       const double low = floor + particle.bounding;
       const double high = std::max(low, floor + height - particle.bounding);
       const Eigen::Vector3d centre(random.uniform(0.0, box.lx), random.uniform(0.0, box.ly), random.uniform(low, high));
@@ -147,7 +148,8 @@ ParticleSet generate_packing(const PackingSpec& spec, const Box& box, double flo
   // Ids in spatial order (z layers, then y rows, then x), so that neighbours sit close in memory.
   const double layer = 2.0 * spec.mean_radius;
   const auto cell = [&](const Candidate& c) {
-    return std::array<long, 3>{std::lround(std::floor(c.centre.z() / layer)), std::lround(std::floor(c.centre.y() / layer)),
+    return std::array<long, 3>{std::lround(std::floor(c.centre.z() / layer)),
+                               std::lround(std::floor(c.centre.y() / layer)),
                                std::lround(std::floor(c.centre.x() / layer))};
   };
   std::vector<std::size_t> spatial(drawn.size());
@@ -162,12 +164,13 @@ ParticleSet generate_packing(const PackingSpec& spec, const Box& box, double flo
 }
 
 OverlapTest ellipsoid_overlap_test(double margin) {
-  return [margin](const Eigen::Vector3d& axes_a, const Eigen::Vector3d& centre_a, const Eigen::Quaterniond& rotation_a,
-                  const Eigen::Vector3d& axes_b, const Eigen::Vector3d& centre_b, const Eigen::Quaterniond& rotation_b) {
-    const Ellipsoid a(axes_a * (1.0 + margin), Pose{centre_a, rotation_a});
-    const Ellipsoid b(axes_b * (1.0 + margin), Pose{centre_b, rotation_b});
-    return ellipsoid_contact(a, b).status != NarrowPhaseStatus::separated;  // failed counts as overlap
-  };
+  return
+      [margin](const Eigen::Vector3d& axes_a, const Eigen::Vector3d& centre_a, const Eigen::Quaterniond& rotation_a,
+               const Eigen::Vector3d& axes_b, const Eigen::Vector3d& centre_b, const Eigen::Quaterniond& rotation_b) {
+        const Ellipsoid a(axes_a * (1.0 + margin), Pose{centre_a, rotation_a});
+        const Ellipsoid b(axes_b * (1.0 + margin), Pose{centre_b, rotation_b});
+        return ellipsoid_contact(a, b).status != NarrowPhaseStatus::separated;  // failed counts as overlap
+      };
 }
 
 }  // namespace ellc::scenario

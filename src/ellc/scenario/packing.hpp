@@ -14,13 +14,13 @@ namespace ellc::scenario {
 
 struct PackingSpec {
   std::size_t count = 0;
-  double mean_radius = 4.0;     // mean r̂ = (abc)^{1/3}, µm
-  double radius_spread = 0.0;   // standard deviation of r̂ relative to the mean (normal, cut at ±2σ)
-  double aspect_min = 0.5;      // b/a and c/a drawn log-uniformly in [aspect_min, aspect_max]
+  double mean_radius = 4.0;    // mean r̂ = (abc)^{1/3}, µm
+  double radius_spread = 0.0;  // standard deviation of r̂ relative to the mean (normal, cut at ±2σ)
+  double aspect_min = 0.5;     // b/a and c/a drawn log-uniformly in [aspect_min, aspect_max]
   double aspect_max = 2.0;
-  bool spheres = false;         // a = b = c = r̂
+  bool spheres = false;  // a = b = c = r̂
   std::uint64_t seed = 1;
-  double density = 4.7e-3;      // ng/µm³, after mass scaling
+  double density = 4.7e-3;           // ng/µm³, after mass scaling
   double insertion_fraction = 0.25;  // solid fraction the insertion region is first sized for
 };
 
@@ -31,7 +31,7 @@ using OverlapTest = std::function<bool(const Eigen::Vector3d& axes_a, const Eige
 
 // Particles with ids 0..N−1, all above z = floor (clear of it by their bounding radius).
 [[nodiscard]] engine::ParticleSet generate_packing(const PackingSpec& spec, const engine::Box& box, double floor,
-                                           const OverlapTest& overlap = {});
+                                                   const OverlapTest& overlap = {});
 
 // Exact ellipsoid overlap through the narrow phase, with the bodies inflated by `margin` (relative).
 [[nodiscard]] OverlapTest ellipsoid_overlap_test(double margin = 0.02);

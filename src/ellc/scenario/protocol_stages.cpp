@@ -31,9 +31,10 @@ double summed_mass(const ParticleSet& particles) {
 double layer_top(const ParticleSet& particles) {
   double top = 0.0;
   for (std::size_t slot = 0; slot < particles.size(); ++slot)
-    top = std::max(top, Ellipsoid(particles.semi_axes[slot], Pose{particles.position[slot], particles.orientation[slot]})
-                            .axis_aligned_bounds()
-                            .upper.z());
+    top =
+        std::max(top, Ellipsoid(particles.semi_axes[slot], Pose{particles.position[slot], particles.orientation[slot]})
+                          .axis_aligned_bounds()
+                          .upper.z());
   return top;
 }
 
@@ -147,8 +148,8 @@ void LoadingProtocol::enter(Simulation& sim, Phase phase) {
       state_.ramp_from = state_.ramp_to = 0.0;
       // The released thickness: after a relaxation the plate has left the layer, so it is the top of
       // the layer's surface; without one, the plate gap when it lost contact.
-      state_.final_gap = state_.relax_start_time > 0.0 ? layer_top(sim.particles()) - sim.walls()[kBottomWall].position
-                                                       : sim.gap();
+      state_.final_gap =
+          state_.relax_start_time > 0.0 ? layer_top(sim.particles()) - sim.walls()[kBottomWall].position : sim.gap();
       state_.final_porosity = sim.porosity();
       state_.done_step = sim.step_count();
       break;
@@ -178,8 +179,9 @@ std::optional<Phase> LoadingProtocol::after_step(Simulation& sim) {
       if (state_.approaching) {
         const double dt = sim.settings().dt;
         const double window = spec.approach_window;
-        state_.approach_average = window > 0.0 ? state_.approach_average + (pressure - state_.approach_average) * std::min(1.0, dt / window)
-                                               : pressure;
+        state_.approach_average =
+            window > 0.0 ? state_.approach_average + (pressure - state_.approach_average) * std::min(1.0, dt / window)
+                         : pressure;
         const double solid_fraction = solid_volume_ / (box_.lx * box_.ly * sim.gap());
         const bool ended = spec.approach_solid_fraction ? solid_fraction >= *spec.approach_solid_fraction
                                                         : state_.approach_average >= spec.approach_pressure;
@@ -202,7 +204,8 @@ std::optional<Phase> LoadingProtocol::after_step(Simulation& sim) {
     case Phase::hold: {
       if (spec.servo_hold && spec.target_pressure) {
         const double error = (*spec.target_pressure - pressure) / *spec.target_pressure;
-        const double speed = std::abs(error) <= spec.servo_tolerance ? 0.0 : std::clamp(spec.servo_gain * error, -1.0, 1.0);
+        const double speed =
+            std::abs(error) <= spec.servo_tolerance ? 0.0 : std::clamp(spec.servo_gain * error, -1.0, 1.0);
         sim.set_wall_velocity(kTopWall, -spec.speed * speed);
       }
       if (sim.time() < state_.phase_end_time) break;
@@ -230,8 +233,8 @@ std::optional<Phase> LoadingProtocol::after_step(Simulation& sim) {
         throw ProtocolError("the released state did not reach equilibrium: after " +
                             format_number(sim.time() - state_.relax_start_time) +
                             " µs of relaxation (calendering.max_relax_time) the unbalanced-force ratio is " +
-                            format_number(ratio) + ", above calendering.equilibrium_ratio = " +
-                            format_number(spec.equilibrium_ratio));
+                            format_number(ratio) +
+                            ", above calendering.equilibrium_ratio = " + format_number(spec.equilibrium_ratio));
       break;
     }
     case Phase::done: break;
@@ -264,7 +267,9 @@ double LoadingProtocol::progress(const Simulation& sim) const noexcept {
       elapsed = settle + std::clamp(fraction, 0.0, 1.0) * load;
       break;
     }
-    case Phase::hold: elapsed = settle + load + std::clamp(hold - (state_.phase_end_time - sim.time()), 0.0, hold); break;
+    case Phase::hold:
+      elapsed = settle + load + std::clamp(hold - (state_.phase_end_time - sim.time()), 0.0, hold);
+      break;
     case Phase::unload:
       elapsed = settle + load + hold + std::clamp((sim.gap() - state_.min_gap) / spec.lift_speed, 0.0, 0.95 * unload);
       break;

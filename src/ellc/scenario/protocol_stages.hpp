@@ -29,16 +29,16 @@ enum class Phase : std::uint8_t { settle, load, hold, unload, done, relax };
 // The protocol's own state (trivially copyable: stored verbatim in checkpoints).
 struct ProtocolState {
   Phase phase = Phase::settle;
-  double phase_end_time = 0.0;        // settle and hold end at fixed times
+  double phase_end_time = 0.0;  // settle and hold end at fixed times
   double load_start_gap = 0.0;
-  double load_start_time = 0.0;       // µs: how long the settling took
-  bool approaching = false;           // the plate still compacts the loose deposit (approach_speed)
-  double press_start_gap = 0.0;       // plate gap when the approach ended
-  double max_pressure = 0.0;          // top plate, MPa
+  double load_start_time = 0.0;  // µs: how long the settling took
+  bool approaching = false;      // the plate still compacts the loose deposit (approach_speed)
+  double press_start_gap = 0.0;  // plate gap when the approach ended
+  double max_pressure = 0.0;     // top plate, MPa
   double gap_at_max_pressure = 0.0;
-  double min_gap = 0.0;               // plate gap at the end of the hold (loaded thickness)
+  double min_gap = 0.0;  // plate gap at the end of the hold (loaded thickness)
   double pressure_end_of_hold = 0.0;
-  double final_gap = 0.0;             // plate gap when the plate lost contact (released thickness)
+  double final_gap = 0.0;  // plate gap when the plate lost contact (released thickness)
   double final_porosity = 0.0;
   double loaded_porosity = 0.0;
   std::uint64_t done_step = 0;
@@ -56,7 +56,7 @@ struct ProtocolState {
     double unbalanced_force_ratio = 1.0;
     double plate_speed = 0.0;  // µm/µs, |v| of the top plate
     double gap = 0.0;
-    double pressure = 0.0;     // MPa, top plate
+    double pressure = 0.0;  // MPa, top plate
   };
   Reading loaded;
   Reading released;
@@ -76,7 +76,8 @@ class LoadingProtocol {
   // A fresh run, before the simulation exists: gravity and drag of the settling into `settings`;
   // returns the walls (floor at z = 0, plate 2 r̂ above the highest particle). The state starts
   // in `settle`.
-  [[nodiscard]] std::array<engine::Wall, 2> start(engine::EngineSettings& settings, const engine::ParticleSet& particles);
+  [[nodiscard]] std::array<engine::Wall, 2> start(engine::EngineSettings& settings,
+                                                  const engine::ParticleSet& particles);
   // The first transition of a fresh run, before any step: `load` when there is no settling.
   [[nodiscard]] std::optional<Phase> initial_transition() const noexcept;
   // A restarted run: the state read from its checkpoint, and the simulation read with it.

@@ -99,13 +99,12 @@ void RunOutputs::record_sample(const Simulation& sim, Phase phase, const EnergyL
   const ContactCounts counts = sim.contact_counts();
   const double count = static_cast<double>(std::max<std::size_t>(sim.particles().size(), 1));
   const auto regime = [&](Regime r) { return counts.by_regime[static_cast<std::size_t>(r)]; };
-  csv_ << sim.step_count() << ',' << sim.time() << ',' << phase_name(phase) << ','
-       << sim.walls()[kTopWall].position << ',' << sim.gap() << ',' << sim.wall_pressure(kTopWall) << ','
-       << sim.wall_pressure(kBottomWall) << ',' << sim.porosity() << ','
-       << 2.0 * static_cast<double>(counts.particle_contacts) / count << ',' << counts.particle_contacts << ','
-       << counts.wall_contacts << ',' << regime(Regime::elastic) << ',' << regime(Regime::elastic_plastic) << ','
-       << regime(Regime::fully_plastic) << ',' << regime(Regime::unloading) << ',' << regime(Regime::separated)
-       << ',' << sim.kinetic_energy() << ',' << sim.plastic_dissipation();
+  csv_ << sim.step_count() << ',' << sim.time() << ',' << phase_name(phase) << ',' << sim.walls()[kTopWall].position
+       << ',' << sim.gap() << ',' << sim.wall_pressure(kTopWall) << ',' << sim.wall_pressure(kBottomWall) << ','
+       << sim.porosity() << ',' << 2.0 * static_cast<double>(counts.particle_contacts) / count << ','
+       << counts.particle_contacts << ',' << counts.wall_contacts << ',' << regime(Regime::elastic) << ','
+       << regime(Regime::elastic_plastic) << ',' << regime(Regime::fully_plastic) << ',' << regime(Regime::unloading)
+       << ',' << regime(Regime::separated) << ',' << sim.kinetic_energy() << ',' << sim.plastic_dissipation();
   const Diagnostics d = diagnose(sim, scales_, ledger);
   const EnergyBalance& e = d.energy;
   csv_ << ',' << d.inertial_number << ',' << d.unbalanced_force_ratio << ',' << d.kinetic_over_elastic << ','
@@ -178,8 +177,9 @@ std::vector<std::string> summary_warnings(const RunSummary& s) {
     std::snprintf(text, sizeof text, "%.0f %%", 100.0 * share);
     return std::string(text);
   };
-  const std::string beyond = " at the loaded state (end of the hold) rests on contacts beyond c_c/r^ = " +
-                             format_number(v.threshold) + ", where the law is outside its range";
+  const std::string beyond =
+      " at the loaded state (end of the hold) rests on contacts beyond c_c/r^ = " + format_number(v.threshold) +
+      ", where the law is outside its range";
   if (s.loaded_validity_shares.wall_force > 0.5)
     warnings.push_back(percent(s.loaded_validity_shares.wall_force) + " of the force on the plates" + beyond +
                        " (r^ the particle's mean radius); the plate pressure extrapolates the law");
@@ -198,8 +198,8 @@ void write_summary_lines(std::ostream& out, const std::string& scenario_source, 
   out.precision(8);
   out << "# ellc dem summary: " << scenario_source << "\n"
       << "finished = " << (s.finished ? "true" : "false") << "\n"
-      << "particles = " << s.particles << "\nsteps = " << s.steps << "\ntime_us = " << s.time
-      << "\ndt_us = " << s.dt << "\ndt_estimate_us = " << s.dt_estimate << "\nmax_pressure_MPa = " << s.max_pressure
+      << "particles = " << s.particles << "\nsteps = " << s.steps << "\ntime_us = " << s.time << "\ndt_us = " << s.dt
+      << "\ndt_estimate_us = " << s.dt_estimate << "\nmax_pressure_MPa = " << s.max_pressure
       << "\nloaded_thickness_um = " << s.loaded_thickness << "\nfinal_thickness_um = " << s.final_thickness
       << "\nspringback_percent = " << s.springback_percent << "\nloaded_porosity = " << s.loaded_porosity
       << "\nfinal_porosity = " << s.final_porosity << "\nplastic_dissipation_pJ = " << s.plastic_dissipation
@@ -216,8 +216,8 @@ void write_summary_lines(std::ostream& out, const std::string& scenario_source, 
       << "# pair's smaller particle (the particle's own against a wall), contacts beyond validity_threshold\n"
       << "loaded_state_recorded = " << (s.loaded_state_recorded ? "true" : "false")
       << "\nloaded_unbalanced_force_ratio = " << s.loaded_unbalanced_force_ratio
-      << "\nloaded_kinetic_over_elastic = " << s.loaded_kinetic_over_elastic
-      << "\nvalidity_threshold = " << v.threshold << "\nvalidity_r_hat = smaller_particle_of_the_pair"
+      << "\nloaded_kinetic_over_elastic = " << s.loaded_kinetic_over_elastic << "\nvalidity_threshold = " << v.threshold
+      << "\nvalidity_r_hat = smaller_particle_of_the_pair"
       << "\nloaded_pair_contacts = " << v.pair_contacts
       << "\nloaded_pair_contacts_beyond_fraction = " << share.pair_contacts
       << "\nloaded_pair_force_beyond_fraction = " << share.pair_force << "\nloaded_wall_contacts = " << v.wall_contacts

@@ -50,29 +50,29 @@ class RunOutputs {
 struct RunSummary {
   std::size_t particles = 0;
   std::uint64_t steps = 0;
-  double time = 0.0;               // µs
-  double dt = 0.0;                 // µs
-  double dt_estimate = 0.0;        // µs
-  double max_pressure = 0.0;       // MPa
-  double loaded_thickness = 0.0;   // µm, plate gap at the end of the hold
-  double final_thickness = 0.0;    // µm, plate gap when contact was lost
-  double springback_percent = 0.0; // 100 (final − loaded) / loaded
+  double time = 0.0;                // µs
+  double dt = 0.0;                  // µs
+  double dt_estimate = 0.0;         // µs
+  double max_pressure = 0.0;        // MPa
+  double loaded_thickness = 0.0;    // µm, plate gap at the end of the hold
+  double final_thickness = 0.0;     // µm, plate gap when contact was lost
+  double springback_percent = 0.0;  // 100 (final − loaded) / loaded
   double loaded_porosity = 0.0;
   double final_porosity = 0.0;
-  double plastic_dissipation = 0.0;  // pJ, whole run
+  double plastic_dissipation = 0.0;              // pJ, whole run
   double plastic_dissipation_calendering = 0.0;  // pJ, from the start of the load
   std::uint64_t narrow_phase_failures = 0;
   bool finished = false;
   // Where the loaded and released states were read (ProtocolState::Reading).
-  double held_pressure = 0.0;                 // MPa, top plate at the loaded reading
-  double loaded_time = 0.0;                   // µs
-  double loaded_plate_speed = 0.0;            // µm/µs
-  double released_time = 0.0;                 // µs
+  double held_pressure = 0.0;       // MPa, top plate at the loaded reading
+  double loaded_time = 0.0;         // µs
+  double loaded_plate_speed = 0.0;  // µm/µs
+  double released_time = 0.0;       // µs
   double released_unbalanced_force_ratio = 0.0;
   // The energy balance at the end of the run (diagnostics.hpp), pJ.
-  double plate_work = 0.0;        // work of both plates
+  double plate_work = 0.0;  // work of both plates
   double gravity_work = 0.0;
-  double energy_residual = 0.0;   // work − (change of stored energy + dissipated energy)
+  double energy_residual = 0.0;           // work − (change of stored energy + dissipated energy)
   double energy_residual_fraction = 0.0;  // residual / work (0 when no work was done)
   // The loaded state, when the hold ended (diagnostics.hpp); `loaded_state_recorded` is false
   // before. The validity report counts contacts beyond c_c/r̂ = 0.16, with c_c of eq. (9) at δ_*

@@ -8,31 +8,31 @@
 #include <string_view>
 #include <vector>
 
-#include "ellc/scenario/packing.hpp"
 #include "ellc/engine/settings.hpp"
+#include "ellc/scenario/packing.hpp"
 
 namespace ellc::scenario {
 
 struct SettleSpec {
-  double gravity = 0.5;    // µm/µs², along −z
-  double drag_rate = 0.5;  // 1/µs, global viscous drag while settling
-  double time = 100.0;     // µs: shortest settling
-  double max_time = 0.0;   // µs: longest settling (0 → 3 × time)
+  double gravity = 0.5;           // µm/µs², along −z
+  double drag_rate = 0.5;         // 1/µs, global viscous drag while settling
+  double time = 100.0;            // µs: shortest settling
+  double max_time = 0.0;          // µs: longest settling (0 → 3 × time)
   double speed_tolerance = 0.05;  // µm/µs: settled when the rms particle speed is below this
 };
 
 struct CalenderingSpec {
-  double speed = 0.1;       // µm/µs, top plate moving down once it presses the layer
+  double speed = 0.1;  // µm/µs, top plate moving down once it presses the layer
   // The plate first compacts the loose deposit at approach_speed, until its pressure reaches
   // approach_pressure; then it calenders at `speed` (0 → no approach: `speed` throughout).
-  double approach_speed = 0.0;     // µm/µs
-  double approach_pressure = 5.0;  // MPa
-  double lift_speed = 0.1;  // µm/µs, top plate moving up
+  double approach_speed = 0.0;             // µm/µs
+  double approach_pressure = 5.0;          // MPa
+  double lift_speed = 0.1;                 // µm/µs, top plate moving up
   std::optional<double> target_thickness;  // µm (plate gap)
   std::optional<double> target_pressure;   // MPa on the top plate
-  double hold_time = 10.0;  // µs
-  double gravity = 0.0;     // µm/µs² during calendering
-  double start_gap = 0.0;   // µm between the highest particle and the plate when it starts
+  double hold_time = 10.0;                 // µs
+  double gravity = 0.0;                    // µm/µs² during calendering
+  double start_gap = 0.0;                  // µm between the highest particle and the plate when it starts
   // Unloading ends when the plate has lost contact: no particle touches it, or its pressure is
   // below this fraction of the maximum (particles set flying by the release, with no gravity to
   // bring them back, would otherwise keep touching the rising plate now and then).
@@ -56,8 +56,8 @@ struct CalenderingSpec {
   // time, then until the unbalanced-force ratio is below equilibrium_ratio; a run that has not got
   // there by max_hold_time (max_relax_time) stops with an error naming the criterion.
   double equilibrium_ratio = 1e-3;
-  double max_hold_time = 0.0;   // µs, 0 → 5 × hold_time
-  double relax_time = 0.0;      // µs after the plate lost contact; 0: the released state is read at once
+  double max_hold_time = 0.0;  // µs, 0 → 5 × hold_time
+  double relax_time = 0.0;     // µs after the plate lost contact; 0: the released state is read at once
   // Background damping −γ m v during the hold and the relaxation only (1/µs): it removes the
   // kinetic energy a static reading must not have, without touching the loading (0: none).
   double rest_drag_rate = 0.0;
@@ -66,24 +66,24 @@ struct CalenderingSpec {
 
 struct OutputSpec {
   std::string directory = "dem_out";
-  long csv_every = 100;         // steps
-  long vtk_every = 0;           // steps, 0 = only the first and last frame
-  long checkpoint_every = 0;    // steps, 0 = only at the end (and on failure)
+  long csv_every = 100;       // steps
+  long vtk_every = 0;         // steps, 0 = only the first and last frame
+  long checkpoint_every = 0;  // steps, 0 = only at the end (and on failure)
 };
 
 struct Scenario {
-  std::string source;             // file name, for messages
-  std::string text;               // the file's text (its hash goes into checkpoints)
+  std::string source;  // file name, for messages
+  std::string text;    // the file's text (its hash goes into checkpoints)
   engine::ContactSettings contact;
   PackingSpec packing;
   std::vector<std::uint64_t> seeds;  // [packing] seeds: one run per seed (ensemble.hpp); empty: one run
   engine::Box box;
-  double mass_scaling = 1.0;      // density multiplier (quasi-static speed-up), docs/engine.md
+  double mass_scaling = 1.0;         // density multiplier (quasi-static speed-up), docs/engine.md
   double material_density = 4.7e-3;  // ng/µm³ before scaling
-  std::optional<double> dt;       // µs; default safety × Rayleigh estimate
+  std::optional<double> dt;          // µs; default safety × Rayleigh estimate
   double time_step_safety = 0.2;
-  double skin = 0.0;              // µm, 0 → automatic
-  double max_speed = 50.0;        // µm/µs: runaway threshold
+  double skin = 0.0;        // µm, 0 → automatic
+  double max_speed = 50.0;  // µm/µs: runaway threshold
   SettleSpec settle;
   CalenderingSpec calendering;
   OutputSpec output;

@@ -9,11 +9,11 @@
 
 #include "ellc/cases/case_file.hpp"
 #include "ellc/contact/contact_parameters.hpp"
-#include "ellc/scenario/ensemble.hpp"
-#include "ellc/scenario/scenario.hpp"
 #include "ellc/io/input_error.hpp"
 #include "ellc/io/table_reader.hpp"
 #include "ellc/material/material.hpp"
+#include "ellc/scenario/ensemble.hpp"
+#include "ellc/scenario/scenario.hpp"
 
 namespace ellc::scenario {
 
@@ -70,8 +70,8 @@ Material read_wall_material(TableReader& table) {
   material.poisson_ratio = table.number("poisson_ratio");
   if (!(material.poisson_ratio > -1.0 && material.poisson_ratio < 0.5))
     table.fail("poisson_ratio", material.poisson_ratio, "a Poisson ratio in the open interval (-1, 0.5)");
-  material.yield_stress = table.has("yield_stress") ? table.positive("yield_stress")
-                                                    : std::numeric_limits<double>::infinity();
+  material.yield_stress =
+      table.has("yield_stress") ? table.positive("yield_stress") : std::numeric_limits<double>::infinity();
   table.finish();
   return material;
 }
@@ -122,13 +122,15 @@ void read_packing(TableReader& table, Scenario& scenario) {
     spec.aspect_max = (*aspect)[1];
   }
   if (!spec.spheres && (spec.aspect_min < 0.5 * (1 - 1e-12) || spec.aspect_max > 2.0 * (1 + 1e-12)))
-    scenario.warnings.push_back("packing.aspect extends outside the calibrated range 1:[0.5..2]:[0.5..2] of the "
-                                "transition fits (eq. 52-53); the law still evaluates");
+    scenario.warnings.push_back(
+        "packing.aspect extends outside the calibrated range 1:[0.5..2]:[0.5..2] of the "
+        "transition fits (eq. 52-53); the law still evaluates");
   spec.seed = static_cast<std::uint64_t>(table.integer_at_least("seed", 0, 1));
   scenario.seeds = read_packing_seeds(table);  // an ensemble over packing seeds (ensemble.hpp)
   scenario.material_density = table.positive("density");
   spec.insertion_fraction = positive_or(table, "insertion_fraction", spec.insertion_fraction);
-  if (spec.insertion_fraction > 0.5) table.fail("insertion_fraction", spec.insertion_fraction, "a solid fraction in (0, 0.5]");
+  if (spec.insertion_fraction > 0.5)
+    table.fail("insertion_fraction", spec.insertion_fraction, "a solid fraction in (0, 0.5]");
   table.finish();
 }
 
@@ -189,7 +191,8 @@ void read_calendering(TableReader& table, CalenderingSpec& spec) {
   spec.servo_hold = table.choice("hold", {"fixed", "servo"}, "fixed") == "servo";
   spec.servo_gain = positive_or(table, "servo_gain", spec.servo_gain);
   spec.servo_tolerance = non_negative_or(table, "servo_tolerance", spec.servo_tolerance);
-  if (spec.servo_tolerance >= 0.5) table.fail("servo_tolerance", spec.servo_tolerance, "a relative pressure error in [0, 0.5)");
+  if (spec.servo_tolerance >= 0.5)
+    table.fail("servo_tolerance", spec.servo_tolerance, "a relative pressure error in [0, 0.5)");
   spec.equilibrium_ratio = positive_or(table, "equilibrium_ratio", spec.equilibrium_ratio);
   spec.max_hold_time = non_negative_or(table, "max_hold_time", spec.max_hold_time);
   if (spec.max_hold_time > 0.0 && spec.max_hold_time < spec.hold_time)
@@ -198,7 +201,8 @@ void read_calendering(TableReader& table, CalenderingSpec& spec) {
   spec.rest_drag_rate = non_negative_or(table, "rest_drag_rate", spec.rest_drag_rate);
   spec.max_relax_time = non_negative_or(table, "max_relax_time", spec.max_relax_time);
   if (spec.max_relax_time > 0.0 && spec.max_relax_time < spec.relax_time)
-    table.fail("max_relax_time", spec.max_relax_time, "a time >= relax_time = " + format_number(spec.relax_time) + " µs");
+    table.fail("max_relax_time", spec.max_relax_time,
+               "a time >= relax_time = " + format_number(spec.relax_time) + " µs");
   table.finish();
 }
 
@@ -224,8 +228,8 @@ void cross_check(const Scenario& scenario) {
                          format_number(spec.mean_radius) + " µm, bounding radius up to " + format_number(largest) +
                          " µm); the particle is too large for the periodic box");
   if (const auto& target = scenario.calendering.target_thickness) {
-    const double solid = static_cast<double>(spec.count) * 4.0 / 3.0 * 3.141592653589793 * std::pow(spec.mean_radius, 3) /
-                         (scenario.box.lx * scenario.box.ly);
+    const double solid = static_cast<double>(spec.count) * 4.0 / 3.0 * 3.141592653589793 *
+                         std::pow(spec.mean_radius, 3) / (scenario.box.lx * scenario.box.ly);
     if (*target <= solid)
       throw InputError(scenario.source, "calendering.target_thickness", format_number(*target),
                        "a plate gap > " + format_number(solid) +

@@ -73,9 +73,9 @@ void ScenarioRunner::build_packing(EngineSettings settings) {
                                   format_number(dt_estimate_) + " µs (" + format_number(scenario_.time_step_safety) +
                                   " x Rayleigh time of the smallest semi-axis)";
       if (!options_.force)
-        throw InputError(scenario_.source, "time.dt", format_number(*scenario_.dt),
-                         "a time step <= " + format_number(dt_estimate_) +
-                             " µs (the stability estimate), or run with --force");
+        throw InputError(
+            scenario_.source, "time.dt", format_number(*scenario_.dt),
+            "a time step <= " + format_number(dt_estimate_) + " µs (the stability estimate), or run with --force");
       warnings_.push_back(message + "; running anyway (--force)");
     }
     settings.dt = *scenario_.dt;
