@@ -23,6 +23,7 @@ namespace {
 
 using namespace ellc;
 using namespace ellc::engine;
+using namespace ellc::scenario;
 
 std::size_t particle_count() {
   if (const char* text = std::getenv("ELLC_BENCH_DEM_PARTICLES")) return std::strtoul(text, nullptr, 10);

@@ -8,3 +8,24 @@ bash scripts/build.sh
 # mpirun refuses to run as root unless told; CI runs as root.
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
 ctest --test-dir build --output-on-failure -j "$(nproc)"
+
+# Guard rails, after the tests above: formatting, clang-tidy, and the ASan+UBSan and TSan
+# builds with their tests (scripts/sanitizers.sh says which subset). Each runs even if an
+# earlier one failed; the command fails if any did. About 12-15 minutes on 2 cores, most of it
+# the two sanitizer builds. ELLC_SKIP_GUARDS=1 skips them for a quick local run (CI does not).
+if [[ ${ELLC_SKIP_GUARDS:-0} == 1 ]]; then
+  echo "== guard rails skipped (ELLC_SKIP_GUARDS=1)"
+  exit 0
+fi
+failed=()
+for guard in check_format tidy sanitizers; do
+  start=$(date +%s)
+  echo "== guard: scripts/${guard}.sh"
+  bash "scripts/${guard}.sh" || failed+=("$guard")
+  echo "== guard: scripts/${guard}.sh took $(($(date +%s) - start)) s"
+done
+if ((${#failed[@]} > 0)); then
+  echo "== guard rails failed: ${failed[*]}" >&2
+  exit 1
+fi
+echo "== guard rails passed: format, clang-tidy, ASan+UBSan, TSan"

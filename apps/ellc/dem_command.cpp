@@ -1,9 +1,14 @@
 // `ellc dem SCENARIO.toml [-o DIR] [--threads N] [--restart CHECKPOINT] [--force] [--no-plot]`
 // Packing generation + calendering with the built-in DEM engine (docs/engine.md).
 // Outputs in DIR: timeseries.csv, summary.txt, pressure_thickness.png, vtk/, checkpoint.bin.
+// `--seeds N [--jobs 2]` (or `[packing] seeds = [...]`): one run per packing seed in DIR/seed_<s>/,
+// and DIR/ensemble_summary.{txt,csv}, DIR/pressure_thickness_ensemble.png (docs/engine.md,
+// "Ensembles over packing seeds"). Exit code 1 when a member failed; the others still run.
 
 #include <unistd.h>
 
+#include <algorithm>
+#include <charconv>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
@@ -12,6 +17,9 @@
 #include <iterator>
 #include <vector>
 #include <memory>
+#include <optional>
+#include <sstream>
+#include <stdexcept>
 #include <string>
 
 #ifdef _OPENMP
@@ -19,6 +27,8 @@
 #endif
 
 #include "command_registry.hpp"
+#include "ellc/io/input_error.hpp"
+#include "ellc/scenario/ensemble.hpp"
 #include "ellc/scenario/scenario_runner.hpp"
 #include "plot_runner.hpp"
 
@@ -34,6 +44,8 @@ struct DemOptions {
   bool no_plot = false;
   bool quiet = false;
   long long max_steps = 0;
+  std::string seeds;  // --seeds N: an ensemble of N consecutive packing seeds
+  std::string jobs;   // --jobs J: ensemble members side by side
 };
 
 std::string clock_text(double seconds) {
@@ -50,7 +62,7 @@ std::string clock_text(double seconds) {
 class Progress {
  public:
   explicit Progress(bool quiet) : quiet_(quiet), tty_(isatty(fileno(stderr)) != 0), start_(clock::now()) {}
-  void update(const engine::ScenarioRunner& runner) {
+  void update(const scenario::ScenarioRunner& runner) {
     if (quiet_) return;
     const double fraction = runner.progress();
     const double elapsed = std::chrono::duration<double>(clock::now() - start_).count();
@@ -60,13 +72,13 @@ class Progress {
       constexpr int width = 30;
       const int filled = static_cast<int>(fraction * width);
       std::fprintf(stderr, "\r[%-*.*s] %5.1f%%  %-6s step %llu  p = %8.3g MPa  ETA %s   ", width, filled,
-                   "##############################", 100.0 * fraction, engine::phase_name(runner.state().phase),
+                   "##############################", 100.0 * fraction, scenario::phase_name(runner.state().phase),
                    static_cast<unsigned long long>(sim.step_count()), sim.wall_pressure(engine::kTopWall),
                    clock_text(eta).c_str());
       std::fflush(stderr);
     } else if (fraction >= next_report_ || runner.done()) {
       std::fprintf(stderr, "ellc dem: %3.0f%%  %-6s step %llu  t = %.4g us  gap = %.4g um  p = %.4g MPa  elapsed %s  ETA %s\n",
-                   100.0 * fraction, engine::phase_name(runner.state().phase),
+                   100.0 * fraction, scenario::phase_name(runner.state().phase),
                    static_cast<unsigned long long>(sim.step_count()), sim.time(), sim.gap(),
                    sim.wall_pressure(engine::kTopWall), clock_text(elapsed).c_str(), clock_text(eta).c_str());
       while (next_report_ <= fraction) next_report_ += 0.1;
@@ -85,7 +97,7 @@ class Progress {
   double next_report_ = 0.0;
 };
 
-void print_summary(const engine::RunSummary& s, const std::string& directory, double seconds) {
+void print_summary(const scenario::RunSummary& s, const std::string& directory, double seconds) {
   std::printf("ellc dem: %s after %llu steps (%.4g us simulated, dt = %.4g us, estimate %.4g us), %zu particles, %.1f s\n",
               s.finished ? "finished" : "stopped", static_cast<unsigned long long>(s.steps), s.time, s.dt,
               s.dt_estimate, s.particles, seconds);
@@ -95,6 +107,13 @@ void print_summary(const engine::RunSummary& s, const std::string& directory, do
   std::printf("  springback        %.4g %%\n", s.springback_percent);
   std::printf("  plastic energy    %.6g pJ (%.6g pJ while calendering)\n", s.plastic_dissipation,
               s.plastic_dissipation_calendering);
+  std::printf("  energy residual   %.4g pJ (%.2g %% of the work done)\n", s.energy_residual,
+              100.0 * s.energy_residual_fraction);
+  if (s.loaded_state_recorded)
+    std::printf("  beyond c_c/r^ = %.2g at the loaded state: %.1f %% of the pair force, %.1f %% of the plate force "
+                "(largest %.3g)\n",
+                s.loaded_validity.threshold, 100.0 * s.loaded_validity_shares.pair_force,
+                100.0 * s.loaded_validity_shares.wall_force, s.loaded_validity.largest_ratio);
   if (s.narrow_phase_failures > 0)
     std::printf("  narrow phase      %llu failed evaluations (treated as no force)\n",
                 static_cast<unsigned long long>(s.narrow_phase_failures));
@@ -127,18 +146,13 @@ void prefer_short_spinning() {
 #endif
 }
 
-void run_dem(const DemOptions& options) {
-  prefer_short_spinning();
-#ifdef _OPENMP
-  if (options.threads > 0) omp_set_num_threads(options.threads);
-#endif
-  engine::Scenario scenario = engine::read_scenario(options.scenario_path);
-  engine::RunOptions run_options;
+void run_single(const DemOptions& options, scenario::Scenario loaded) {
+  scenario::RunOptions run_options;
   run_options.output_directory = options.output_directory;
   run_options.restart_path = options.restart_path;
   run_options.force = options.force;
   Progress progress(options.quiet);
-  engine::ScenarioRunner runner(std::move(scenario), run_options);
+  scenario::ScenarioRunner runner(std::move(loaded), run_options);
   for (const auto& warning : runner.warnings()) std::fprintf(stderr, "ellc: warning: %s\n", warning.c_str());
 
   const std::uint64_t chunk = 100;
@@ -153,7 +167,10 @@ void run_dem(const DemOptions& options) {
   const std::string checkpoint = (std::filesystem::path(runner.output_directory()) / "checkpoint.bin").string();
   if (!runner.done()) runner.write_checkpoint(checkpoint);
   runner.write_summary();
-  print_summary(runner.summary(), runner.output_directory(), progress.seconds());
+  const scenario::RunSummary summary = runner.summary();
+  print_summary(summary, runner.output_directory(), progress.seconds());
+  std::fflush(stdout);  // the warnings after the summary they qualify, also when both go to one file
+  for (const auto& warning : scenario::summary_warnings(summary)) std::fprintf(stderr, "ellc: warning: %s\n", warning.c_str());
   if (!runner.done()) std::printf("  stopped at --max-steps; continue with --restart %s\n", checkpoint.c_str());
   if (!options.no_plot) {
     const auto directory = std::filesystem::path(runner.output_directory());
@@ -161,6 +178,143 @@ void run_dem(const DemOptions& options) {
     run_python_plot({"dem", (directory / "timeseries.csv").string(), png, "--title", options.scenario_path});
     std::printf("  plot: %s\n", png.c_str());
   }
+}
+
+// The whole of `text` as an integer, or an InputError naming the option.
+long long integer_option(const char* option, const std::string& text, const std::string& expected) {
+  long long value = 0;
+  const char* end = text.data() + text.size();
+  const auto [stop, error] = std::from_chars(text.data(), end, value);
+  if (text.empty() || error != std::errc{} || stop != end) throw InputError("", option, text, expected);
+  return value;
+}
+
+// One run per packing seed (scenario/ensemble.hpp); the plots are drawn here, after all members
+// have run, from this thread alone (the plot runner forks).
+void run_members(const DemOptions& options, const scenario::Scenario& loaded, const std::vector<std::uint64_t>& seeds,
+                 int jobs) {
+  using scenario::EnsembleMember;
+  using scenario::ScenarioRunner;
+  const auto start = std::chrono::steady_clock::now();
+  for (const auto& warning : loaded.warnings) std::fprintf(stderr, "ellc: warning: %s\n", warning.c_str());
+  scenario::EnsembleOptions ensemble;
+  ensemble.run.output_directory = options.output_directory;
+  ensemble.run.force = options.force;
+  ensemble.jobs = jobs;
+  const bool one_at_a_time = std::min<std::size_t>(static_cast<std::size_t>(jobs), seeds.size()) == 1;
+  std::unique_ptr<Progress> progress;  // the bar of a single run, when members run one at a time
+  ensemble.on_member_start = [&](const EnsembleMember& member) {
+    if (!options.quiet)
+      std::fprintf(stderr, "ellc dem: member %zu/%zu, packing seed %llu -> %s\n", member.index + 1, seeds.size(),
+                   static_cast<unsigned long long>(member.seed), member.directory.c_str());
+    if (one_at_a_time) progress = std::make_unique<Progress>(options.quiet);
+  };
+  if (one_at_a_time) ensemble.on_progress = [&](const EnsembleMember&, const ScenarioRunner& runner) { progress->update(runner); };
+  ensemble.on_member_end = [&](const EnsembleMember& member, const ScenarioRunner*) {
+    if (progress) progress->finish();
+    for (const auto& warning : member.warnings)
+      if (std::find(loaded.warnings.begin(), loaded.warnings.end(), warning) == loaded.warnings.end())
+        std::fprintf(stderr, "ellc: warning: packing seed %llu: %s\n", static_cast<unsigned long long>(member.seed),
+                     warning.c_str());
+    const auto seed = static_cast<unsigned long long>(member.seed);
+    if (member.finished)
+      std::printf("ellc dem: seed %llu finished: %llu steps, max pressure %.6g MPa, loaded %.6g um, final %.6g um, "
+                  "springback %.4g %%, %.1f s\n",
+                  seed, static_cast<unsigned long long>(member.summary.steps), member.summary.max_pressure,
+                  member.summary.loaded_thickness, member.summary.final_thickness, member.summary.springback_percent,
+                  member.seconds);
+    else
+      std::printf("ellc dem: seed %llu FAILED after %.1f s: %s\n", seed, member.seconds, member.error.c_str());
+    std::fflush(stdout);
+  };
+  const scenario::EnsembleResult result = scenario::run_ensemble(loaded, seeds, ensemble);
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+
+  std::printf("\nellc dem: ensemble of %zu packing seeds: %zu finished, %zu failed, %.1f s\n", result.members.size(),
+              result.finished_count(), result.failed_count(), seconds);
+  std::ostringstream table;
+  scenario::write_ensemble_summary_text(table, result);
+  std::fputs(table.str().c_str(), stdout);
+  const auto directory = std::filesystem::path(result.directory);
+  const bool plot = !options.no_plot && result.finished_count() > 0;
+  std::printf("outputs in %s: ensemble_summary.txt ensemble_summary.csv%s, and seed_<seed>/ per member\n",
+              result.directory.c_str(), plot ? " pressure_thickness_ensemble.png" : "");
+  std::fflush(stdout);
+
+  std::string plot_error;
+  if (plot) {
+    try {
+      std::vector<std::string> ensemble_plot{"dem-ensemble", (directory / "pressure_thickness_ensemble.png").string(),
+                                             "--title", options.scenario_path};
+      for (const EnsembleMember& member : result.members) {
+        if (!member.finished) continue;
+        const auto member_directory = std::filesystem::path(member.directory);
+        const std::string csv = (member_directory / "timeseries.csv").string();
+        run_python_plot({"dem", csv, (member_directory / "pressure_thickness.png").string(), "--title",
+                         options.scenario_path + ", packing seed " + std::to_string(member.seed)});
+        ensemble_plot.push_back(csv);
+      }
+      run_python_plot(ensemble_plot);
+    } catch (const std::exception& error) {
+      plot_error = error.what();
+    }
+  }
+  if (result.failed_count() > 0 || !plot_error.empty()) {
+    std::string message;
+    if (result.failed_count() > 0)
+      message = std::to_string(result.failed_count()) + " of " + std::to_string(result.members.size()) +
+                " ensemble members failed (listed in " + (directory / "ensemble_summary.txt").string() + "; " +
+                (result.finished_count() > 0
+                     ? "the statistics are over the " + std::to_string(result.finished_count()) + " that finished)"
+                     : "none finished, so there are no statistics)");
+    if (!plot_error.empty()) message += (message.empty() ? "" : "; ") + plot_error;
+    throw std::runtime_error(message);
+  }
+}
+
+void run_dem(const DemOptions& options) {
+  prefer_short_spinning();
+#ifdef _OPENMP
+  if (options.threads > 0) omp_set_num_threads(options.threads);
+#endif
+  scenario::Scenario loaded = scenario::read_scenario(options.scenario_path);
+  std::optional<long long> count;
+  if (!options.seeds.empty())
+    count = integer_option("--seeds", options.seeds,
+                           "a number of packing seeds, an integer in [1, " +
+                               std::to_string(scenario::kMaxEnsembleMembers) + "]");
+  int jobs = 1;
+  if (!options.jobs.empty()) {
+    const long long value = integer_option("--jobs", options.jobs, "a number of members run side by side, an integer >= 1");
+    if (value < 1) throw InputError("", "--jobs", options.jobs, "a number of members run side by side, an integer >= 1");
+    jobs = static_cast<int>(std::min<long long>(value, static_cast<long long>(scenario::kMaxEnsembleMembers)));
+  }
+  // A checkpoint continues one run, also one member of an ensemble (its packing is in the checkpoint).
+  if (!options.restart_path.empty()) {
+    if (count)
+      throw InputError("", "--restart", options.restart_path,
+                       "no --seeds with --restart: continue one member on its own, with -o DIR/seed_<s> "
+                       "--restart DIR/seed_<s>/checkpoint.bin");
+    run_single(options, std::move(loaded));
+    return;
+  }
+  const std::vector<std::uint64_t> seeds = scenario::ensemble_seeds(loaded, count);
+  if (seeds.empty()) {
+    if (!options.jobs.empty())
+      throw InputError("", "--jobs", options.jobs,
+                       "--seeds N or [packing] seeds with it: --jobs runs the members of an ensemble side by side "
+                       "(-j sets the threads of one run)");
+    run_single(options, std::move(loaded));
+    return;
+  }
+  if (options.max_steps > 0)
+    throw InputError("", "--max-steps", std::to_string(options.max_steps),
+                     "no --max-steps for an ensemble (every member runs to the end of the protocol)");
+  if (jobs > 1 && options.threads > 1)
+    throw InputError("", "--threads", std::to_string(options.threads),
+                     "1, or no --threads, with --jobs " + std::to_string(jobs) +
+                         ": members that run side by side use one engine thread each");
+  run_members(options, loaded, seeds, jobs);
 }
 
 const RegisterCommand registration([](CLI::App& root) {
@@ -177,6 +331,9 @@ const RegisterCommand registration([](CLI::App& root) {
   command->add_flag("-q,--quiet", options->quiet, "No progress output");
   command->add_option("--max-steps", options->max_steps, "Stop after this many steps and write a checkpoint")
       ->check(CLI::PositiveNumber);
+  command->add_option("--seeds", options->seeds,
+                      "Run an ensemble: N packing seeds from [packing] seed (seed, seed+1, ...), each in DIR/seed_<s>/");
+  command->add_option("--jobs", options->jobs, "Ensemble members run side by side (default 1; one engine thread each)");
   command->callback([options] { run_dem(*options); });
 });
 

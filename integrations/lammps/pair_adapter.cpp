@@ -48,8 +48,8 @@ PairEvaluation evaluate_pair(const AtomBody& a, const AtomBody& b, const ellc::I
         ellc::pair_forces(solution, a.ellipsoid.center(), {motion_a.velocity, motion_a.angular_velocity, motion_a.mass},
                           b.ellipsoid.center(), {motion_b.velocity, motion_b.angular_velocity, motion_b.mass}, context,
                           timestep, record);
-    result.force_on_b = forces.force_on_j;
-    result.normal_force = forces.force_on_j.dot(solution.normal);  // F_t ⊥ n
+    result.force_on_b = forces.contact.on_j;
+    result.normal_force = forces.contact.on_j.dot(solution.normal);  // F_t ⊥ n
     result.torque_on_a = forces.torque_on_i;
     result.torque_on_b = forces.torque_on_j;
   }

@@ -1,17 +1,20 @@
 """The figures of the ellc tools, from arrays, and their command line.
 
 Each figure the C++ tools draw is a function of numpy arrays (or lists) that returns the
-matplotlib Figure, so the same figure can be made in Python from computed results:
+matplotlib Figure (or draws into given axes), so the same figure can be made in Python from
+computed results:
 
 * :func:`curve_figure`     ``ellc curve --plot``: F/F_pY against delta/delta_Y (Fig. 13, 15)
 * :func:`fit_figures`      ``ellc fit --plot PREFIX``: lambda profiles (Fig. 11), radius fits (Fig. 12)
 * :func:`dem_figure`       ``ellc dem``'s pressure_thickness.png: plate pressure against thickness
+  and the energies over time
+* :func:`plot_pressure_thickness_ensemble`  the members of ``ellc dem --seeds N`` on one axes
 * :func:`pressure_figure`  pressure along a_c and b_c and the contact ellipses (Fig. 4, 9, 14)
 
 The command line reads the CSV tables the tools write and calls these functions; the CLI runs it as
 ``python3 -m ellc.plots curve IN.csv OUT.png`` (subcommands ``curve``, ``fit PREFIX``,
-``pressure CASE.toml OUT.png``, which needs the compiled module, and ``dem IN.csv OUT.png``).
-The single panels live in ellc.figures.
+``pressure CASE.toml OUT.png``, which needs the compiled module, ``dem CSV OUT.png`` and
+``dem-ensemble OUT.png CSV...``). The single panels live in ellc.figures.
 """
 
 import argparse
@@ -80,17 +83,23 @@ def fit_figures(panels, radius_ratio, lambda_max, epsilon_max, curve_ratio, lamb
     return lambda_figure, radius_figure
 
 
-def dem_figure(thickness, plate_pressure, phase, time, kinetic_energy, plastic_dissipation, title=None):
+def dem_figure(columns, title=None):
     """Calendering as ``ellc dem`` draws it (pressure_thickness.png); returns the Figure.
 
-    Left: plate pressure [MPa] against layer thickness [um], one colour per ``phase`` (``"load"``,
-    ``"hold"``, ``"unload"``), zoomed on where the pressure exceeds 1 % of its maximum. Right: the
-    kinetic and the plastically dissipated energy [pJ] against ``time`` [us]. The arguments are the
-    columns of ``timeseries.csv`` of the same names.
+    ``columns`` maps the column names of ``timeseries.csv`` to arrays (or lists) of one length:
+    ``thickness``, ``plate_pressure``, ``phase`` (``"load"``, ``"hold"``, ``"unload"``), ``time``,
+    ``kinetic_energy`` and ``plastic_dissipation``; when it also has ``energy_residual``, the energy
+    balance's terms too (``work_bottom_plate``, ``work_top_plate``, ``gravity_work``,
+    ``elastic_energy``, ``spring_energy``, ``friction_dissipation``, ``damping_dissipation``,
+    ``drag_dissipation``). Left: plate pressure [MPa] against layer thickness [um], one colour per
+    phase, zoomed on where the pressure exceeds 1 % of its maximum. Right: the energies [pJ]
+    against time [us].
     """
-    thickness = np.asarray(thickness, dtype=float)
-    pressure = np.asarray(plate_pressure, dtype=float)
-    phase = np.asarray(phase, dtype=str)
+    def column(name):
+        return np.asarray(columns[name], dtype=float)
+
+    thickness, pressure = column("thickness"), column("plate_pressure")
+    phase = np.asarray(columns["phase"], dtype=str)
     figure, (left, right) = plt.subplots(1, 2, figsize=(11, 4.4), dpi=110)
     colours = {"load": "tab:blue", "hold": "tab:orange", "unload": "tab:green"}
     for name, colour in colours.items():
@@ -110,13 +119,23 @@ def dem_figure(thickness, plate_pressure, phase, time, kinetic_energy, plastic_d
     left.set_ylim(bottom=0)
     left.grid(alpha=0.3)
     left.legend(loc="upper right")
-    right.plot(time, kinetic_energy, color="tab:red", label="kinetic")
-    right.plot(time, plastic_dissipation, color="tab:purple", label="plastically dissipated")
+    time = column("time")
+    right.plot(time, column("kinetic_energy"), color="tab:red", label="kinetic")
+    right.plot(time, column("plastic_dissipation"), color="tab:purple", label="plastically dissipated")
+    if "energy_residual" in columns:  # the energy balance (ellc dem since the diagnostics columns)
+        work = column("work_bottom_plate") + column("work_top_plate") + column("gravity_work")
+        right.plot(time, work, color="black", lw=1.2, label="work of plates and gravity")
+        right.plot(time, column("elastic_energy") + column("spring_energy"), color="tab:blue",
+                   label="stored elastic (law and springs)")
+        right.plot(time, column("friction_dissipation"), color="tab:olive", label="friction")
+        right.plot(time, column("damping_dissipation") + column("drag_dissipation"), color="tab:cyan",
+                   label="dashpots and drag")
+        right.plot(time, column("energy_residual"), ":", color="tab:gray", label="residual of the balance")
     right.set_xlabel("time [us]")
     right.set_ylabel("energy [pJ]")
     right.set_yscale("symlog", linthresh=1.0)
     right.grid(alpha=0.3)
-    right.legend(loc="upper left")
+    right.legend(loc="upper left", fontsize=7)
     if title:
         figure.suptitle(title, fontsize=9)
     figure.tight_layout()
@@ -185,10 +204,83 @@ def pressure_command(args):
 
 def dem_command(args):
     """Calendering from `ellc dem` timeseries.csv: plate pressure against layer thickness during
-    load, hold and unload, and the energies over time."""
+    load, hold and unload, and the energies over time (with the energy balance's terms and its
+    residual when the CSV has them)."""
     columns = read_columns(args.csv)
-    _save(dem_figure(columns["thickness"], columns["plate_pressure"], columns["phase"], columns["time"],
-                     columns["kinetic_energy"], columns["plastic_dissipation"], title=args.title), args.png)
+    _save(dem_figure(columns, title=args.title), args.png)
+    return 0
+
+
+def plot_pressure_thickness_ensemble(members, axes=None, title=None):
+    """The pressure-thickness curves of an ensemble over packing seeds (``ellc dem --seeds N``)
+    on one axes, one colour per member: load and hold solid, unload dashed.
+
+    ``members``: a list of ``(label, columns)``, where ``columns`` maps ``"thickness"`` and
+    ``"plate_pressure"`` (and optionally ``"phase"``) to equal-length sequences or arrays, as
+    ``read_columns`` gives them for a member's timeseries.csv. Without ``"phase"`` every row is
+    drawn as one solid line. Returns the axes.
+    """
+    import numpy as np
+
+    if axes is None:
+        _, axes = plt.subplots(figsize=(7.5, 5.0), dpi=110)
+    colours = plt.get_cmap("viridis" if len(members) > 10 else "tab10")
+    peak = 0.0
+    for _, columns in members:
+        pressure = np.asarray(columns["plate_pressure"], dtype=float)
+        if pressure.size:
+            peak = max(peak, float(np.nanmax(pressure)))
+    pressed = []
+    for index, (label, columns) in enumerate(members):
+        colour = colours(index / max(len(members) - 1, 1)) if len(members) > 10 else colours(index % 10)
+        thickness = np.asarray(columns["thickness"], dtype=float)
+        pressure = np.asarray(columns["plate_pressure"], dtype=float)
+        phases = np.asarray(columns["phase"], dtype=str) if "phase" in columns else None
+        if phases is None:
+            axes.plot(thickness, pressure, "-", lw=1.0, color=colour, label=label)
+        else:
+            loading = (phases == "load") | (phases == "hold")
+            unloading = phases == "unload"
+            axes.plot(thickness[loading], pressure[loading], "-", lw=1.0, color=colour, label=label)
+            axes.plot(thickness[unloading], pressure[unloading], "--", lw=1.0, color=colour)
+        pressed.extend(thickness[pressure > 0.05 * peak])
+    # Zoom on the calendering proper: where the plate pressure exceeds 5 % of the ensemble's
+    # largest (1 %, as for one run, would keep the few-MPa ripples of the loose deposit's
+    # compaction, which reach 1 % in some member or other).
+    if pressed:
+        low, high = min(pressed), max(pressed)
+        margin = 0.15 * (high - low) + 1e-9
+        axes.set_xlim(low - margin, high + margin)
+    axes.set_xlabel("layer thickness (plate gap) [um]")
+    axes.set_ylabel("plate pressure [MPa]")
+    axes.set_ylim(bottom=0)
+    axes.grid(alpha=0.3)
+    if members:
+        if len(members) <= 10:
+            axes.legend(loc="upper right", fontsize=8, title="load solid, unload dashed", title_fontsize=8)
+        else:
+            axes.text(0.98, 0.97, f"{len(members)} packing seeds; load solid, unload dashed",
+                      transform=axes.transAxes, ha="right", va="top", fontsize=8)
+    if title:
+        axes.set_title(title, fontsize=9)
+    return axes
+
+
+def dem_ensemble_command(args):
+    """The members' pressure-thickness curves of `ellc dem --seeds N` in one plot; a member is
+    labelled by the folder of its CSV (seed_<seed>) unless --labels is given."""
+    import pathlib
+
+    labels = args.labels.split(",") if args.labels else [pathlib.Path(path).parent.name for path in args.csv]
+    if len(labels) != len(args.csv):
+        raise SystemExit(f"--labels has {len(labels)} names for {len(args.csv)} CSV files")
+    members = [(label, read_columns(path)) for label, path in zip(labels, args.csv)]
+    figure, axes = plt.subplots(figsize=(7.5, 5.0), dpi=110)
+    title = f"{args.title}: {len(members)} packing seeds" if args.title else f"{len(members)} packing seeds"
+    plot_pressure_thickness_ensemble(members, axes, title)
+    figure.tight_layout()
+    figure.savefig(args.png)
+    plt.close(figure)
     return 0
 
 
@@ -213,6 +305,12 @@ def main(argv=None):
     dem.add_argument("png")
     dem.add_argument("--title")
     dem.set_defaults(run=dem_command)
+    ensemble = sub.add_parser("dem-ensemble", help="pressure against thickness of the members of `ellc dem --seeds N`")
+    ensemble.add_argument("png")
+    ensemble.add_argument("csv", nargs="+", help="the members' timeseries.csv")
+    ensemble.add_argument("--labels", help="comma-separated member names (default: each CSV's folder)")
+    ensemble.add_argument("--title")
+    ensemble.set_defaults(run=dem_ensemble_command)
     args = parser.parse_args(argv)
     if argv is None:  # run as a program (the CLI): no display, write files only
         plt.switch_backend("Agg")

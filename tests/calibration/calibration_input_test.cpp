@@ -6,18 +6,15 @@
 #include <fstream>
 
 #include "ellc/calibration/calibration_case.hpp"
-#include "ellc/io/input_error.hpp"
+#include "support/input_error.hpp"
+#include "support/nmc.hpp"
 
 namespace ellc {
 namespace {
 
 namespace fs = std::filesystem;
 
-constexpr const char* kCaseToml = R"([material]
-youngs_modulus = 142000.0
-poisson_ratio = 0.25
-yield_stress = 7900.0
-[body_I]
+const std::string kCaseToml = test::nmc_material_toml() + R"([body_I]
 aspect = [1.0, 1.0, 0.8]
 mean_radius = 10.0
 [body_J]
@@ -40,13 +37,8 @@ class CalibrationInput : public ::testing::Test {
     std::ofstream(path) << text;
     return path.string();
   }
-  std::string message_of(const std::string& argument) {
-    try {
-      (void)read_calibration_case(argument);
-    } catch (const InputError& error) {
-      return error.what();
-    }
-    return "(no error)";
+  static std::string message_of(const std::string& argument) {
+    return test::input_error_message([&] { (void)read_calibration_case(argument); });
   }
   fs::path folder_;
 };

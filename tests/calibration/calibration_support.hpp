@@ -11,10 +11,11 @@
 #include "ellc/calibration/calibration_case.hpp"
 #include "ellc/cases/case_file.hpp"
 #include "ellc/law/contact_law.hpp"
+#include "support/nmc.hpp"
 
 namespace ellc::testing_support {
 
-inline const Material kNmc{142000.0, 0.25, 7900.0};
+using ellc::test::kNmc;
 
 // Known constants, deliberately different from the paper's eq. (53).
 inline LawParameters true_law() {

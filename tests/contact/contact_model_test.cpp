@@ -190,9 +190,9 @@ TEST(PairContact, ForcesBalanceAndTorquesConserveAngularMomentum) {
   const Eigen::Vector3d v_i(0.5, 0.1, 0.0), w_i(0.0, 0.0, 0.2), v_j(0.0, -0.3, 0.0), w_j(0.0, 3.0, -1.0);
   const PairForces forces =
       pair_forces(solution, c_i, BodyMotion{v_i, w_i, 3.0}, c_j, BodyMotion{v_j, w_j, 1.5}, context, 1e-3, history);
-  EXPECT_GT(forces.force_on_j.dot(solution.normal), 0.0);  // pushes J away from I
-  const Eigen::Vector3d moment = forces.torque_on_i + forces.torque_on_j + (c_j - c_i).cross(forces.force_on_j);
-  EXPECT_LT(moment.norm(), 1e-12 * forces.force_on_j.norm() * (c_j - c_i).norm());
+  EXPECT_GT(forces.contact.on_j.dot(solution.normal), 0.0);  // pushes J away from I
+  const Eigen::Vector3d moment = forces.torque_on_i + forces.torque_on_j + (c_j - c_i).cross(forces.contact.on_j);
+  EXPECT_LT(moment.norm(), 1e-12 * forces.contact.on_j.norm() * (c_j - c_i).norm());
 }
 
 // A sphere pressed on a flat, below yield: exact Hertz, F = 4/3 E_e sqrt(R) δ^{3/2} with R_e = R

@@ -7,6 +7,7 @@
 #include "ellc/geometry/tip_contact.hpp"
 #include "ellc/geometry/wall_contact.hpp"
 #include "support/geometry_support.hpp"
+#include "support/nmc.hpp"
 
 namespace ellc {
 namespace {
@@ -23,8 +24,7 @@ TEST(NormalContact, TipOnAWallIsHertzWithAFlat) {
   EXPECT_DOUBLE_EQ(result.geometry.curvature_i.kappa_1, 3.0 / 4.0);
   EXPECT_DOUBLE_EQ(result.geometry.curvature_i.kappa_2, 3.0 / 16.0);
 
-  const Material material{142000.0, 0.25, 7900.0};
-  const ContactMaterial mixed = mix(material, material);
+  const ContactMaterial mixed = mix(test::kNmc, test::kNmc);
   EXPECT_DOUBLE_EQ(wall_mean_radius_sum(body), 2.0 * mean_radius(axes));
   const NormalContact contact =
       normal_contact(result.geometry, mixed, wall_mean_radius_sum(body), HertzMode::hale, LawParameters{}, 0.0);

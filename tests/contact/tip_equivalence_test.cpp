@@ -13,6 +13,7 @@
 #include "ellc/contact/normal_contact.hpp"
 #include "ellc/geometry/tip_contact.hpp"
 #include "support/geometry_support.hpp"
+#include "support/nmc.hpp"
 
 namespace ellc {
 namespace {
@@ -20,7 +21,7 @@ namespace {
 constexpr double kTolerance = 1e-12;
 constexpr double kDegree = std::numbers::pi / 180.0;
 
-Material nmc() { return {142000.0, 0.25, 7900.0}; }
+using test::kNmc;
 
 Eigen::Vector3d from_aspect(const Eigen::Vector3d& aspect, double mean) { return aspect * (mean / std::cbrt(aspect.prod())); }
 
@@ -64,7 +65,7 @@ std::vector<double> protocol(double mean_radius_sum) {
 
 void check_case(const TipCase& tip, HertzMode mode, const Eigen::Quaterniond& world_rotation,
                 const Eigen::Vector3d& world_offset) {
-  const ContactMaterial material = mix(nmc(), nmc());
+  const ContactMaterial material = mix(kNmc, kNmc);
   const LawParameters law;
   const double mean_radius_sum = mean_radius(tip.axes_i) + mean_radius(tip.axes_j);
   const TipContact special_geometry = tip_contact({tip.axes_i, tip.twist_i}, {tip.axes_j, tip.twist_j});

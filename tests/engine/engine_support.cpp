@@ -1,12 +1,14 @@
 #include "engine_support.hpp"
 
-#include <fstream>
-#include <sstream>
-#include <stdexcept>
-
+#include "ellc/scenario/packing.hpp"
 #include "ellc/scenario/random.hpp"
 
 namespace ellc::engine::testing {
+
+using scenario::ellipsoid_overlap_test;
+using scenario::generate_packing;
+using scenario::PackingSpec;
+using scenario::Random;
 
 EngineSettings free_settings(NormalModel model) {
   EngineSettings settings;
@@ -34,36 +36,6 @@ ParticleSet colliding_packing(std::size_t count, std::uint64_t seed, double inse
   for (auto& velocity : particles.velocity)
     velocity = Eigen::Vector3d(random.uniform(-1, 1), random.uniform(-1, 1), random.uniform(-1, 1));
   return particles;
-}
-
-std::string quick_scenario_text() {
-  std::ifstream file(std::string(ELLC_EXAMPLES_DIR) + "/calendering_quick.toml");
-  if (!file) throw std::runtime_error("examples/calendering_quick.toml not found");
-  std::stringstream text;
-  text << file.rdbuf();
-  return text.str();
-}
-
-std::string replace_line(std::string text, const std::string& starts_with, const std::string& line) {
-  const auto at = text.find("\n" + starts_with);
-  if (at == std::string::npos) throw std::runtime_error("no line starting with " + starts_with);
-  const auto end = text.find('\n', at + 1);
-  return text.replace(at + 1, end - at - 1, line);
-}
-
-Scenario quick_scenario(const std::string& text) { return parse_scenario(text, "calendering_quick.toml"); }
-
-RunOptions in_memory(std::size_t parallel_threshold) {
-  RunOptions options;
-  options.write_files = false;
-  options.parallel_threshold = parallel_threshold;
-  return options;
-}
-
-std::string state_bytes(const Simulation& simulation) {
-  std::ostringstream out(std::ios::binary);
-  simulation.write_state(out);
-  return out.str();
 }
 
 }  // namespace ellc::engine::testing

@@ -1,16 +1,14 @@
 #pragma once
-// Shared helpers of the engine tests: NMC settings, the quick calendering scenario, state dumps.
+// Shared helpers of the engine tests: NMC settings for free bodies and colliding packings.
 
-#include <string>
+#include <cstdint>
 
-#include "ellc/scenario/packing.hpp"
-#include "ellc/scenario/scenario.hpp"
-#include "ellc/scenario/scenario_runner.hpp"
 #include "ellc/engine/simulation.hpp"
+#include "support/nmc.hpp"
 
 namespace ellc::engine::testing {
 
-inline const Material kNmc{142000.0, 0.25, 7900.0};
+using ellc::test::kNmc;
 inline constexpr double kScaledDensity = 4.7e-3 * 1000.0;  // ng/µm³
 
 // Settings for a few free bodies: no damping, no friction, no gravity, far walls.
@@ -19,19 +17,9 @@ inline constexpr double kScaledDensity = 4.7e-3 * 1000.0;  // ng/µm³
 // A loose packing of `count` ellipsoids (r̂ = 4 µm ± 10 %, aspects 1:[0.5..2]:[0.5..2], density
 // kScaledDensity) in the 42 µm × 42 µm box kCollidingBox, inserted above `floor` at the given
 // solid fraction, each with a random velocity in [−1, 1]³ µm/µs: bodies that collide often.
+// (Test data from the scenario layer's packing generator and its Random.)
 inline constexpr Box kCollidingBox{42.0, 42.0};
 [[nodiscard]] ParticleSet colliding_packing(std::size_t count, std::uint64_t seed, double insertion_fraction,
                                             double floor, std::uint64_t velocity_seed);
-
-// Text of examples/calendering_quick.toml, optionally with one line replaced.
-[[nodiscard]] std::string quick_scenario_text();
-[[nodiscard]] std::string replace_line(std::string text, const std::string& starts_with, const std::string& line);
-[[nodiscard]] Scenario quick_scenario(const std::string& text);
-
-// Options for runs that write nothing to disk.
-[[nodiscard]] RunOptions in_memory(std::size_t parallel_threshold = 0);
-
-// The full simulation state as bytes (write_state): equal bytes = bitwise-equal runs.
-[[nodiscard]] std::string state_bytes(const Simulation& simulation);
 
 }  // namespace ellc::engine::testing

@@ -6,11 +6,15 @@
 #include <cmath>
 
 #include "ellc/hertz/elliptic_hertz.hpp"
+#include "support/nmc.hpp"
 
 namespace {
 using ellc::HertzMode;
 
-constexpr double kModulus = 142000.0 / (2.0 * (1.0 - 0.0625));
+using ellc::test::kNmc;
+
+// E_e of two NMC bodies, E / (2 (1 − ν²)).
+constexpr double kModulus = kNmc.youngs_modulus / (2.0 * (1.0 - kNmc.poisson_ratio * kNmc.poisson_ratio));
 
 TEST(Hertz, TwoEqualSpheresGiveHalfTheRadiusAndNoCorrection) {
   const ellc::PrincipalCurvatures sphere{0.1, 0.1};  // R = 10

@@ -12,18 +12,22 @@
 #include "ellc/law/contact_constants.hpp"
 #include "pair_adapter.hpp"
 #include "pair_coefficients.hpp"
+#include "support/nmc.hpp"
 
 namespace ellc_lammps {
 namespace {
 
+using ellc::test::kNmc;
+using ellc::test::nmc_pair_coeff;
+
 TEST(PairCoefficients, ParsesPositionalValuesAndKeywords) {
-  const auto parsed = parse_coefficients({"142000", "0.25", "7900", "friction", "0.3", "damping", "0.1",
-                                          "lambda", "1", "-4", "2.5", "exponent", "2"});
+  const auto parsed = parse_coefficients(
+      nmc_pair_coeff({"friction", "0.3", "damping", "0.1", "lambda", "1", "-4", "2.5", "exponent", "2"}));
   ASSERT_EQ(parsed.error, "");
   const auto& c = parsed.coefficients;
-  EXPECT_EQ(c.material.youngs_modulus, 142000.0);
-  EXPECT_EQ(c.material.poisson_ratio, 0.25);
-  EXPECT_EQ(c.material.yield_stress, 7900.0);
+  EXPECT_EQ(c.material.youngs_modulus, kNmc.youngs_modulus);
+  EXPECT_EQ(c.material.poisson_ratio, kNmc.poisson_ratio);
+  EXPECT_EQ(c.material.yield_stress, kNmc.yield_stress);
   EXPECT_EQ(c.model.friction, 0.3);
   EXPECT_EQ(c.model.normal_damping, 0.1);
   EXPECT_EQ(c.model.law.fit.lambda_amplitude, 1.0);
@@ -48,16 +52,17 @@ TEST(PairCoefficients, RejectsBadInputWithTheFieldName) {
 
 TEST(PairCoefficients, MixesMaterialsByEquationThreeAndTheSofterYield) {
   const auto steel = parse_coefficients({"210000", "0.3", "900", "friction", "0.4"}).coefficients;
-  const auto nmc = parse_coefficients({"142000", "0.25", "7900", "friction", "0.1"}).coefficients;
+  const auto nmc = parse_coefficients(nmc_pair_coeff({"friction", "0.1"})).coefficients;
   std::string error;
   const ellc::InteractionContext mixed = mixed_pair(steel, nmc, error);
   EXPECT_EQ(error, "");
-  const double expected = 1.0 / ((1 - 0.09) / 210000.0 + (1 - 0.0625) / 142000.0);
+  const double nmc_plane_strain = kNmc.youngs_modulus / (1 - kNmc.poisson_ratio * kNmc.poisson_ratio);
+  const double expected = 1.0 / ((1 - 0.09) / 210000.0 + 1.0 / nmc_plane_strain);
   EXPECT_NEAR(mixed.material.effective_modulus, expected, 1e-9 * expected);
   EXPECT_EQ(mixed.material.yield_stress, 900.0);
   EXPECT_NEAR(mixed.model.friction, 0.2, 1e-15);
   const ellc::InteractionContext same = explicit_pair(nmc);
-  EXPECT_NEAR(same.material.effective_modulus, 142000.0 / (2 * (1 - 0.0625)), 1e-9);
+  EXPECT_NEAR(same.material.effective_modulus, nmc_plane_strain / 2, 1e-9);
 }
 
 TEST(PairCoefficients, RefusesToMixDifferentLawParameters) {
@@ -69,8 +74,8 @@ TEST(PairCoefficients, RefusesToMixDifferentLawParameters) {
 }
 
 TEST(PairCoefficients, SerializationRoundTrips) {
-  const auto c = parse_coefficients({"142000", "0.25", "7900", "friction", "0.3", "tangential_stiffness", "0.8",
-                                     "epsilon", "8", "-6", "1.2", "yield_factor", "1.5"})
+  const auto c = parse_coefficients(nmc_pair_coeff({"friction", "0.3", "tangential_stiffness", "0.8", "epsilon", "8", "-6",
+                                                     "1.2", "yield_factor", "1.5"}))
                      .coefficients;
   const auto back = TypeCoefficients::deserialize(c.serialize());
   EXPECT_EQ(back.serialize(), c.serialize());
@@ -84,7 +89,7 @@ struct SpherePair : ::testing::Test {
   SpherePair() {
     a.semi_axes = b.semi_axes = Eigen::Vector3d::Constant(5.0);
     a.mass = b.mass = 2.0;
-    coefficients = explicit_pair(parse_coefficients({"142000", "0.25", "7900"}).coefficients);
+    coefficients = explicit_pair(parse_coefficients(nmc_pair_coeff()).coefficients);
   }
   PairEvaluation at_overlap(double overlap) {
     b.position = {10.0 - overlap, 0.0, 0.0};
@@ -154,7 +159,7 @@ std::pair<BodyState, BodyState> general_pose_pair() {
 TEST(EllipsoidPair, ConservesMomentumAndAngularMomentumInAGeneralPose) {
   const auto [a, b] = general_pose_pair();
   const ellc::InteractionContext c =
-      explicit_pair(parse_coefficients({"142000", "0.25", "7900", "friction", "0.3", "damping", "0.2"}).coefficients);
+      explicit_pair(parse_coefficients(nmc_pair_coeff({"friction", "0.3", "damping", "0.2"})).coefficients);
   std::vector<double> history(static_cast<std::size_t>(kHistoryDoubles), 0.0);
   const PairEvaluation result = evaluate_pair(a, b, c, 1e-3, history.data());
   ASSERT_TRUE(result.touching);
@@ -223,7 +228,7 @@ TEST(OneContactModel, AdapterGivesExactlyTheSharedPairForces) {
     shared = ellc::pair_forces(solution, a.position, {a.velocity, a.angular_velocity, a.mass}, b.position,
                                {b.velocity, b.angular_velocity, b.mass}, context, 1e-3, history);
   }
-  EXPECT_EQ(through_adapter.force_on_b, shared.force_on_j);
+  EXPECT_EQ(through_adapter.force_on_b, shared.contact.on_j);
   EXPECT_EQ(through_adapter.torque_on_a, shared.torque_on_i);
   EXPECT_EQ(through_adapter.torque_on_b, shared.torque_on_j);
   double flat[ellc::ContactHistory::kDoubles];

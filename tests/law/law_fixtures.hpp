@@ -4,10 +4,11 @@
 
 #include "ellc/geometry/tip_contact.hpp"
 #include "ellc/law/contact_law.hpp"
+#include "support/nmc.hpp"
 
 namespace ellc::testing {
 
-inline const Material kNmc{142000.0, 0.25, 7900.0};
+using ellc::test::kNmc;
 
 inline Eigen::Vector3d from_aspect(double b, double c, double mean) {
   const Eigen::Vector3d ratios(1.0, b, c);

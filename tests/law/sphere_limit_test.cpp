@@ -38,7 +38,7 @@ TEST(SphereLimit, ElasticFullyPlasticVariantIsThornton1997) {
     const Eigen::Vector3d sphere = Eigen::Vector3d::Constant(radius);
     for (HertzMode mode : {HertzMode::hale, HertzMode::exact}) {
       const auto c = ellc::testing::tip_constants(sphere, sphere, 0.0, 0.0, mode, LawParameters{}.elastic_fully_plastic());
-      const Thornton thornton{c.effective_modulus, radius / 2.0, 1.6 * 7900.0};
+      const Thornton thornton{c.effective_modulus, radius / 2.0, 1.6 * ellc::testing::kNmc.yield_stress};
       EXPECT_NEAR(c.equivalent_radius, radius / 2.0, 1e-14 * radius);
       EXPECT_NEAR(c.yield_overlap / thornton.yield_overlap(), 1.0, 1e-13);
       EXPECT_NEAR(c.yield_force / thornton.yield_force(), 1.0, 1e-13);
@@ -68,6 +68,6 @@ TEST(SphereLimit, EqualSpheresSitAtAQuarterOfTheMeanRadiusSum) {
   // Fully plastic slope is π λ_max Y R_e (c_c² = R_e δ for spheres).
   const double overlap = 2.0 * c.plastic_limit_overlap;
   const double slope = (loading_force(c, overlap * 1.001).force - loading_force(c, overlap).force) / (overlap * 0.001);
-  EXPECT_NEAR(slope / (M_PI * c.lambda_max * 7900.0 * 1.5), 1.0, 1e-9);
+  EXPECT_NEAR(slope / (M_PI * c.lambda_max * ellc::testing::kNmc.yield_stress * 1.5), 1.0, 1e-9);
 }
 }  // namespace

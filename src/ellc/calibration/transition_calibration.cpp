@@ -178,6 +178,7 @@ bool fit_shared_exponent(std::vector<CaseCalibration>& cases, double yield_press
                      exponents.end());
     exponent = exponents[exponents.size() / 2];
     std::vector<std::array<double, 2>> shapes;
+    shapes.reserve(informative.size());
     for (const std::size_t index : informative) shapes.push_back({cases[index].own.lambda_max, cases[index].own.epsilon_max});
     ceres::Problem problem;
     for (std::size_t slot = 0; slot < informative.size(); ++slot)

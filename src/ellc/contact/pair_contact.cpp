@@ -93,14 +93,11 @@ PairForces pair_forces(const PairSolution& solution, const Eigen::Vector3d& cent
                                      motion_j.velocity + motion_j.angular_velocity.cross(lever_j) - motion_i.velocity -
                                          motion_i.angular_velocity.cross(lever_i),
                                      motion_i.mass * motion_j.mass / (motion_i.mass + motion_j.mass)};
-  const ContactForce force =
-      contact_force(context, *solution.constants, solution.overlap, solution.law.force, kinematics, dt, history);
   PairForces forces;
-  forces.force_on_j = force.on_j;
-  forces.damping_dissipation = force.damping_dissipation;
-  forces.friction_dissipation = force.friction_dissipation;
-  forces.torque_on_i = -lever_i.cross(forces.force_on_j);
-  forces.torque_on_j = lever_j.cross(forces.force_on_j);
+  forces.contact =
+      contact_force(context, *solution.constants, solution.overlap, solution.law.force, kinematics, dt, history);
+  forces.torque_on_i = -lever_i.cross(forces.contact.on_j);
+  forces.torque_on_j = lever_j.cross(forces.contact.on_j);
   return forces;
 }
 
@@ -111,13 +108,10 @@ WallForces wall_forces(const PairSolution& solution, const Eigen::Vector3d& cent
   const ContactKinematics kinematics{
       solution.normal, Eigen::Vector3d(0.0, 0.0, wall_velocity) - motion.velocity - motion.angular_velocity.cross(lever),
       motion.mass};
-  const ContactForce force =
-      contact_force(context, *solution.constants, solution.overlap, solution.law.force, kinematics, dt, history);
   WallForces forces;
-  forces.force_on_wall = force.on_j;
-  forces.damping_dissipation = force.damping_dissipation;
-  forces.friction_dissipation = force.friction_dissipation;
-  forces.lever_cross_force = lever.cross(forces.force_on_wall);
+  forces.contact =
+      contact_force(context, *solution.constants, solution.overlap, solution.law.force, kinematics, dt, history);
+  forces.lever_cross_force = lever.cross(forces.contact.on_j);
   return forces;
 }
 

@@ -76,11 +76,9 @@ struct BodyMotion {
 };
 
 struct PairForces {
-  Eigen::Vector3d force_on_j = Eigen::Vector3d::Zero();  // the force on I is −force_on_j
+  ContactForce contact;  // contact.on_j: the force on J; the force on I is −contact.on_j
   Eigen::Vector3d torque_on_i = Eigen::Vector3d::Zero();
   Eigen::Vector3d torque_on_j = Eigen::Vector3d::Zero();
-  double damping_dissipation = 0.0;   // this step's, ContactForce
-  double friction_dissipation = 0.0;
 };
 
 // Forces of a touching contact (solution.status == contact) on both bodies; `centre_j` is J's
@@ -91,10 +89,8 @@ struct PairForces {
                                      ContactHistory& history) noexcept;
 
 struct WallForces {
-  Eigen::Vector3d force_on_wall = Eigen::Vector3d::Zero();  // the force on the body is −force_on_wall
-  Eigen::Vector3d lever_cross_force = Eigen::Vector3d::Zero();  // (x − c) × force_on_wall: −torque on the body
-  double damping_dissipation = 0.0;                              // this step's, ContactForce
-  double friction_dissipation = 0.0;
+  ContactForce contact;  // contact.on_j: the force on the wall; the force on the body is −contact.on_j
+  Eigen::Vector3d lever_cross_force = Eigen::Vector3d::Zero();  // (x − c) × contact.on_j: −torque on the body
 };
 
 // A touching body–wall contact; the wall moves along z at `wall_velocity` and does not turn.

@@ -1,6 +1,8 @@
 #include "ellc/engine/broad_phase.hpp"
 
+#include "ellc/assert.hpp"
 #include "ellc/contact/contact_energy.hpp"
+#include "ellc/engine/invariants.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -81,6 +83,7 @@ void wrap_positions(ParticleSet& particles, const Box& box) noexcept {
     if (x.x() >= box.lx) x.x() = 0.0;  // −tiny wraps to lx after rounding
     if (x.y() >= box.ly) x.y() = 0.0;
   }
+  ELLC_ASSERT(invariants::positions_in_box(particles, box), "wrap_positions left a particle outside [0, lx) x [0, ly)");
 }
 
 std::vector<PairSlot> find_candidate_pairs(const ParticleSet& particles, const Box& box, double skin, bool parallel) {
@@ -91,6 +94,7 @@ std::vector<PairSlot> find_candidate_pairs(const ParticleSet& particles, const B
 
 void find_candidate_pairs(const ParticleSet& particles, const Box& box, double skin, bool parallel,
                           std::vector<PairSlot>& pairs) {
+  ELLC_ASSERT(invariants::positions_in_box(particles, box), "find_candidate_pairs needs x, y wrapped into the box");
   const std::size_t count = particles.size();
   if (count < 2) {
     pairs.clear();
@@ -201,9 +205,11 @@ void find_candidate_pairs(const ParticleSet& particles, const Box& box, double s
       pair.shift = part[k].shift;
     }
   }
+  ELLC_ASSERT(invariants::valid_pair_list(pairs, particles), "pairs not sorted by key, or slots/ids inconsistent");
 }
 
 double carry_over_history(std::vector<PairSlot>& previous, std::vector<PairSlot>& next) noexcept {
+  ELLC_ASSERT(invariants::keys_sorted(previous) && invariants::keys_sorted(next), "both lists must be sorted by key");
   double released_work = 0.0;
   std::size_t n = 0;
   for (auto& old_pair : previous) {

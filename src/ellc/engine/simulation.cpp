@@ -4,9 +4,12 @@
 #include <cmath>
 #include <limits>
 
+#include "ellc/assert.hpp"
 #include "ellc/contact/contact_energy.hpp"
 #include "ellc/engine/broad_phase.hpp"
+#include "ellc/engine/invariants.hpp"
 #include "ellc/engine/rigid_body.hpp"
+#include "ellc/geometry/wall_contact.hpp"
 
 namespace ellc::engine {
 
@@ -102,6 +105,8 @@ void Simulation::index_pairs_by_particle() {
     pairs_of_particle_[fill[pairs_[index].i]++] = entry;
     pairs_of_particle_[fill[pairs_[index].j]++] = entry + 1;
   }
+  ELLC_ASSERT(invariants::valid_pair_index(pairs_, count, pairs_of_particle_start_, pairs_of_particle_),
+              "per-particle pair index inconsistent with the pair list");
 }
 
 std::size_t Simulation::pairs_proven_apart() const noexcept {
@@ -267,11 +272,11 @@ void Simulation::evaluate_walls_and_reset(std::size_t slot) {
     }
     const WallForces on_wall =
         wall_forces(solution, p.position[slot], motion, wall.velocity, wall_context_, settings_.dt, history);
-    force -= on_wall.force_on_wall;
+    force -= on_wall.contact.on_j;
     torque -= on_wall.lever_cross_force;
-    result.force_on_wall = on_wall.force_on_wall;
-    result.damping_dissipation = on_wall.damping_dissipation;
-    result.friction_dissipation = on_wall.friction_dissipation;
+    result.force_on_wall = on_wall.contact.on_j;
+    result.damping_dissipation = on_wall.contact.damping_dissipation;
+    result.friction_dissipation = on_wall.contact.friction_dissipation;
     result.regime = solution.law.regime;
     result.contact = true;
   }
@@ -334,11 +339,11 @@ void Simulation::evaluate_pair(std::size_t index) {
   const PairForces forces =
       pair_forces(solution, p.position[i], BodyMotion{p.velocity[i], omega_world_[i], p.mass[i]}, centre_j,
                   BodyMotion{p.velocity[j], omega_world_[j], p.mass[j]}, pair_context_, settings_.dt, history);
-  result.force_on_j = forces.force_on_j;
+  result.force_on_j = forces.contact.on_j;
   result.torque_i = forces.torque_on_i;
   result.torque_j = forces.torque_on_j;
-  result.damping_dissipation = forces.damping_dissipation;
-  result.friction_dissipation = forces.friction_dissipation;
+  result.damping_dissipation = forces.contact.damping_dissipation;
+  result.friction_dissipation = forces.contact.friction_dissipation;
 }
 
 // Where contributions meet. Each particle adds its pair forces to its wall forces in pair-list
@@ -496,6 +501,59 @@ ValidityReport Simulation::validity(double threshold) const noexcept {
       }
     }
   return report;
+}
+
+void Simulation::for_each_contact(const std::function<void(const ContactView&)>& visit) const {
+  const auto& p = particles_;
+  for (std::size_t index = 0; index < pairs_.size(); ++index) {
+    if (pair_reported_[index] == 0 || !pair_results_[index].contact) continue;
+    const PairSlot& pair = pairs_[index];
+    ContactView view;
+    view.i = pair.i;
+    view.j = pair.j;
+    view.centre_i = p.position[pair.i];
+    view.other = p.position[pair.j] + pair.shift;
+    // Two spheres meet along their centre line; any other pair along the common normal the
+    // narrow phase stored as its warm start.
+    const bool spheres = is_sphere_[pair.i] != 0 && is_sphere_[pair.j] != 0;
+    const auto& n = pair.history.warm_normal;
+    view.normal = !spheres && pair.history.warm_valid != 0.0 ? Eigen::Vector3d(n[0], n[1], n[2]).normalized()
+                                                            : (view.other - view.centre_i).normalized();
+    view.force = pair_results_[index].force_on_j;
+    view.normal_force = view.force.dot(view.normal);
+    view.overlap = pair.cache.last_overlap;
+    view.max_overlap = pair.history.max_overlap;
+    view.regime = pair_results_[index].regime;
+    view.size_ratio = contact_size_ratio(pair.cache.constants, pair.history.max_overlap,
+                                         std::min(p.mean_radius[pair.i], p.mean_radius[pair.j]));
+    visit(view);
+  }
+  for (int w = 0; w < 2; ++w)
+    for (std::size_t slot = 0; slot < wall_results_[w].size(); ++slot) {
+      if (wall_reported_[w][slot] == 0 || !wall_results_[w][slot].contact) continue;
+      const WallContact& wall = wall_history_[w][slot];
+      ContactView view;
+      view.wall = w;
+      view.i = view.j = static_cast<std::uint32_t>(slot);
+      view.centre_i = p.position[slot];
+      // The point the wall force acts at, as the contact layer finds it (closed form for a flat).
+      if (is_sphere_[slot] != 0) {
+        view.other = Eigen::Vector3d(p.position[slot].x(), p.position[slot].y(), walls_[w].position);
+      } else {
+        const Ellipsoid posed(p.semi_axes[slot], Pose{p.position[slot], p.orientation[slot]});
+        view.other = wall_contact(posed, Plane{Eigen::Vector3d(0.0, 0.0, walls_[w].position),
+                                               Eigen::Vector3d(0.0, 0.0, walls_[w].side)})
+                         .geometry.point;
+      }
+      view.normal = Eigen::Vector3d(0.0, 0.0, -walls_[w].side);
+      view.force = wall_results_[w][slot].force_on_wall;
+      view.normal_force = view.force.dot(view.normal);
+      view.overlap = wall.cache.last_overlap;
+      view.max_overlap = wall.history.max_overlap;
+      view.regime = wall_results_[w][slot].regime;
+      view.size_ratio = contact_size_ratio(wall.cache.constants, wall.history.max_overlap, p.mean_radius[slot]);
+      visit(view);
+    }
 }
 
 double Simulation::unbalanced_force_ratio() const noexcept {

@@ -10,6 +10,7 @@
 
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <iosfwd>
 #include <stdexcept>
 #include <string>
@@ -77,6 +78,24 @@ struct ValidityReport {
 [[nodiscard]] double contact_size_ratio(const ContactConstants& constants, double max_overlap,
                                         double mean_radius) noexcept;
 
+// One contact of the last force evaluation, for outputs (Simulation::for_each_contact): the
+// contacts ValidityReport and ContactCounts count, a pair of particles or a particle on a wall.
+struct ContactView {
+  int wall = -1;          // −1: a pair; kBottomWall or kTopWall: particle i against that wall
+  std::uint32_t i = 0;    // particle slot (of a pair: the smaller id)
+  std::uint32_t j = 0;    // the other particle's slot (pairs only)
+  Eigen::Vector3d centre_i = Eigen::Vector3d::Zero();
+  // Pairs: the centre of j's periodic image (j's centre + the pair's shift); walls: the contact point.
+  Eigen::Vector3d other = Eigen::Vector3d::Zero();
+  Eigen::Vector3d normal = Eigen::Vector3d::UnitZ();  // unit, i → j (particle → wall)
+  Eigen::Vector3d force = Eigen::Vector3d::Zero();    // on j (pairs) or on the wall, µN
+  double normal_force = 0.0;  // force · normal, µN (> 0 presses the bodies apart)
+  double overlap = 0.0;       // δ of the last evaluation, µm
+  double max_overlap = 0.0;   // δ_*, µm
+  Regime regime = Regime::separated;
+  double size_ratio = 0.0;    // c_c/r̂ as ValidityReport defines it (contact_size_ratio)
+};
+
 class Simulation {
  public:
   Simulation(const EngineSettings& settings, ParticleSet particles, const std::array<Wall, 2>& walls);
@@ -112,6 +131,9 @@ class Simulation {
   [[nodiscard]] double contact_elastic_energy() const noexcept;  // ∫F_law dδ minus what the law gives back, pJ
   [[nodiscard]] ContactCounts contact_counts() const noexcept;
   [[nodiscard]] ValidityReport validity(double threshold = 0.16) const noexcept;
+  // Calls `visit` for every contact of the last force evaluation: the pairs in pair-list order,
+  // then the floor's contacts and the plate's, each by particle slot. Read-only; for outputs.
+  void for_each_contact(const std::function<void(const ContactView&)>& visit) const;
   // Static equilibrium: the mean magnitude of the particles' net contact force over the mean
   // magnitude of the contact forces (pair and wall contacts). 0 in exact equilibrium; the usual
   // quasi-static criterion is < 10⁻³. 1 when there are no contact forces at all.
@@ -128,25 +150,22 @@ class Simulation {
   void read_state(std::istream& in);
 
  private:
-  struct PairResult {
-    Eigen::Vector3d force_on_j = Eigen::Vector3d::Zero();
-    Eigen::Vector3d torque_i = Eigen::Vector3d::Zero();
-    Eigen::Vector3d torque_j = Eigen::Vector3d::Zero();
-    double released_work = 0.0;
+  // What one contact evaluation reports to the sums of the step, pair or wall alike.
+  struct ContactTally {
+    double released_work = 0.0;  // plastic work of a contact that ended
     double damping_dissipation = 0.0;
     double friction_dissipation = 0.0;
     Regime regime = Regime::separated;
     bool contact = false;
     bool failed = false;
   };
-  struct WallResult {
+  struct PairResult : ContactTally {
+    Eigen::Vector3d force_on_j = Eigen::Vector3d::Zero();
+    Eigen::Vector3d torque_i = Eigen::Vector3d::Zero();
+    Eigen::Vector3d torque_j = Eigen::Vector3d::Zero();
+  };
+  struct WallResult : ContactTally {
     Eigen::Vector3d force_on_wall = Eigen::Vector3d::Zero();
-    double released_work = 0.0;
-    double damping_dissipation = 0.0;
-    double friction_dissipation = 0.0;
-    Regime regime = Regime::separated;
-    bool contact = false;
-    bool failed = false;
   };
   // A result slot is only written when this step has something to say (a contact, released
   // plastic work, a failure); a byte per slot (1 = written this step) says which slots are
@@ -175,7 +194,7 @@ class Simulation {
   void evaluate_pair(std::size_t index);
   void evaluate_walls_and_reset(std::size_t slot);
   void accumulate();
-  [[noreturn]] void report_runaway(std::size_t slot) const;
+  [[noreturn]] void report_runaway(std::size_t first_bad) const;
 
   EngineSettings settings_;
   ParticleSet particles_;

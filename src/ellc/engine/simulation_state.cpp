@@ -99,10 +99,7 @@ void Simulation::state_fields(Io& io, Self& self) {
   io(self.pairs_);
   for (auto& histories : self.wall_history_) io(histories);
   // Results of the last force evaluation (the regimes the outputs report).
-  const auto pair_result = [&io](auto& result) {
-    io(result.force_on_j);
-    io(result.torque_i);
-    io(result.torque_j);
+  const auto tally = [&io](auto& result) {
     io(result.released_work);
     io(result.damping_dissipation);
     io(result.friction_dissipation);
@@ -110,14 +107,15 @@ void Simulation::state_fields(Io& io, Self& self) {
     io(result.contact);
     io(result.failed);
   };
-  const auto wall_result = [&io](auto& result) {
+  const auto pair_result = [&io, &tally](auto& result) {
+    io(result.force_on_j);
+    io(result.torque_i);
+    io(result.torque_j);
+    tally(result);
+  };
+  const auto wall_result = [&io, &tally](auto& result) {
     io(result.force_on_wall);
-    io(result.released_work);
-    io(result.damping_dissipation);
-    io(result.friction_dissipation);
-    io(result.regime);
-    io(result.contact);
-    io(result.failed);
+    tally(result);
   };
   // Slots not written this step are stored as empty results; reading marks the slots that hold
   // something as written (holds_something), which is what the step that wrote them had set.

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "ellc/assert.hpp"
 #include "ellc/geometry/contact_function.hpp"
 #include "ellc/geometry/tangent_frame.hpp"
 
@@ -219,8 +220,11 @@ void mark_solved(const Ellipsoid& body_i, const Ellipsoid& body_j, const AlongNo
     return;
   }
   result.status = NarrowPhaseStatus::contact;
+  ELLC_ASSERT(std::abs(at.normal.squaredNorm() - 1.0) < 1e-12, "contact normal is not a unit vector");
+  ELLC_ASSERT(std::isfinite(at.overlap), "contact overlap is not finite");
   ContactGeometry& geometry = result.geometry;
   fill_support_geometry(body_i, body_j, at, geometry);
+  ELLC_ASSERT(geometry.point.allFinite(), "contact point is not finite");
   // Shape operators of both implicit surfaces (x − c)ᵀ M_w (x − c) = 1 in one tangent frame:
   // Wₐᵦ = tₐᵀ M_w tᵦ / |M_w (x − c)|, and at the point with normal ±n, 1/|M_w (x − c)| = ρ(n)
   // (Ellipsoid::curvature_in_frame, both bodies at once). Their sum is the relative curvature
@@ -231,6 +235,9 @@ void mark_solved(const Ellipsoid& body_i, const Ellipsoid& body_j, const AlongNo
   const Lanes w12 = forms.q12 * at.reach;
   const Lanes w22 = forms.q22 * at.reach;
   geometry.relative = relative_curvature_from_tensor(w11.sum(), w12.sum(), w22.sum());
+  ELLC_ASSERT(std::isfinite(geometry.relative.a_sum) && std::isfinite(geometry.relative.b_sum) &&
+                  geometry.relative.a_sum <= geometry.relative.b_sum,
+              "relative curvature A, B of eq. (5) not finite or A > B");
   if (surface_curvatures) {
     geometry.curvature_i = curvature_from_shape_operator(w11[0], w12[0], w22[0], frame, at.normal);
     geometry.curvature_j = curvature_from_shape_operator(w11[1], w12[1], w22[1], frame, -at.normal);

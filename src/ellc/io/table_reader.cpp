@@ -11,8 +11,8 @@ namespace ellc {
 namespace {
 std::string describe_node(const toml::node& node) {
   std::ostringstream out;
-  if (node.is_string())
-    out << '"' << *node.value<std::string>() << '"';
+  if (const auto* text = node.as_string())
+    out << '"' << text->get() << '"';
   else if (node.is_table())
     out << "a table";
   else if (node.is_array())
@@ -115,6 +115,29 @@ std::optional<std::vector<double>> TableReader::optional_numbers(std::string_vie
   values.reserve(array->size());
   for (std::size_t index = 0; index < array->size(); ++index)
     values.push_back(finite_number(*array->get(index), field(key) + "[" + std::to_string(index) + "]"));
+  return values;
+}
+
+std::optional<std::vector<long>> TableReader::optional_integers(std::string_view key, long minimum) {
+  const toml::node* node = find(key);
+  if (node == nullptr) return std::nullopt;
+  const std::string expected = "an integer >= " + std::to_string(minimum);
+  const toml::array* array = node->as_array();
+  if (array == nullptr) fail(key, describe_node(*node), "an array of integers >= " + std::to_string(minimum));
+  std::vector<long> values;
+  values.reserve(array->size());
+  for (std::size_t index = 0; index < array->size(); ++index) {
+    const toml::node& element = *array->get(index);
+    const std::string element_field = field(key) + "[" + std::to_string(index) + "]";
+    const auto value = element.value_exact<int64_t>();
+    if (!value) {
+      std::string seen = describe_node(element);
+      if (element.is_floating_point() && seen.find_first_of(".eni") == std::string::npos) seen += ".0";  // 3.0, not 3
+      throw InputError(source_, element_field, seen, expected);
+    }
+    if (*value < minimum) throw InputError(source_, element_field, std::to_string(*value), expected);
+    values.push_back(static_cast<long>(*value));
+  }
   return values;
 }
 

@@ -31,6 +31,9 @@ class TableReader {
   [[nodiscard]] std::vector<double> numbers(std::string_view key, std::size_t required_size = 0);
   [[nodiscard]] std::optional<std::vector<double>> optional_numbers(std::string_view key,
                                                                     std::size_t required_size = 0);
+  // An array of integers, each >= minimum (an empty array is returned as such; absent: nullopt).
+  // A float (even 3.0), a string or a value below `minimum` is refused naming `key[index]`.
+  [[nodiscard]] std::optional<std::vector<long>> optional_integers(std::string_view key, long minimum);
   // A string that must be one of `allowed`.
   [[nodiscard]] std::string choice(std::string_view key, const std::vector<std::string>& allowed,
                                    std::optional<std::string> fallback = {});

@@ -11,7 +11,11 @@
 #include "ellc/geometry/narrow_phase.hpp"
 #include "ellc/scenario/random.hpp"
 
-namespace ellc::engine {
+namespace ellc::scenario {
+
+using engine::Box;
+using engine::ellipsoid_volume;
+using engine::ParticleSet;
 
 namespace {
 
@@ -166,4 +170,4 @@ OverlapTest ellipsoid_overlap_test(double margin) {
   };
 }
 
-}  // namespace ellc::engine
+}  // namespace ellc::scenario

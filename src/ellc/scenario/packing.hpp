@@ -2,7 +2,7 @@
 // Packing generation: N ellipsoids with a size distribution and aspect ratios 1:[lo..hi]:[lo..hi]
 // in random orientations, placed without overlap by random sequential insertion into the
 // periodic box above the bottom wall. The loose packing is then settled by the scenario
-// (gravity + drag), see scenario_runner.hpp.
+// (gravity + drag), see protocol_stages.hpp.
 
 #include <cstdint>
 #include <functional>
@@ -10,7 +10,7 @@
 #include "ellc/engine/particles.hpp"
 #include "ellc/engine/settings.hpp"
 
-namespace ellc::engine {
+namespace ellc::scenario {
 
 struct PackingSpec {
   std::size_t count = 0;
@@ -30,10 +30,10 @@ using OverlapTest = std::function<bool(const Eigen::Vector3d& axes_a, const Eige
                                        const Eigen::Vector3d& centre_b, const Eigen::Quaterniond& rotation_b)>;
 
 // Particles with ids 0..N−1, all above z = floor (clear of it by their bounding radius).
-[[nodiscard]] ParticleSet generate_packing(const PackingSpec& spec, const Box& box, double floor,
+[[nodiscard]] engine::ParticleSet generate_packing(const PackingSpec& spec, const engine::Box& box, double floor,
                                            const OverlapTest& overlap = {});
 
 // Exact ellipsoid overlap through the narrow phase, with the bodies inflated by `margin` (relative).
 [[nodiscard]] OverlapTest ellipsoid_overlap_test(double margin = 0.02);
 
-}  // namespace ellc::engine
+}  // namespace ellc::scenario

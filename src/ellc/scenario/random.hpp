@@ -10,7 +10,7 @@
 #include <cstdint>
 #include <numbers>
 
-namespace ellc::engine {
+namespace ellc::scenario {
 
 class Random {
  public:
@@ -41,4 +41,4 @@ class Random {
   std::uint64_t state_;
 };
 
-}  // namespace ellc::engine
+}  // namespace ellc::scenario

@@ -11,7 +11,7 @@
 #include "ellc/scenario/packing.hpp"
 #include "ellc/engine/settings.hpp"
 
-namespace ellc::engine {
+namespace ellc::scenario {
 
 struct SettleSpec {
   double gravity = 0.5;    // µm/µs², along −z
@@ -37,6 +37,31 @@ struct CalenderingSpec {
   // below this fraction of the maximum (particles set flying by the release, with no gravity to
   // bring them back, would otherwise keep touching the rising plate now and then).
   double release_fraction = 1e-3;
+
+  // Quasi-static protocol (docs/engine.md, "Loading protocol").
+  // Every change of the plate's velocity is a half-cosine ramp over ramp_time (0: a step).
+  double ramp_time = 0.0;  // µs
+  // The approach ends when the top pressure averaged over approach_window (an exponential average
+  // with that time constant; 0: the instantaneous pressure) reaches approach_pressure, or, when
+  // given, when the solid fraction between the plates reaches approach_solid_fraction.
+  double approach_window = 0.0;  // µs
+  std::optional<double> approach_solid_fraction;
+  // Hold: the plate stays where it is (`fixed`) or a servo holds target_pressure (`servo`), with
+  // the plate speed −speed · clamp(servo_gain (p_target − p)/p_target, −1, 1).
+  // Within servo_tolerance of the target the plate stands still, so the layer can come to rest.
+  bool servo_hold = false;
+  double servo_gain = 5.0;
+  double servo_tolerance = 0.01;
+  // Readings at equilibrium: the hold (and the relaxation after the release) last at least their
+  // time, then until the unbalanced-force ratio is below equilibrium_ratio; a run that has not got
+  // there by max_hold_time (max_relax_time) stops with an error naming the criterion.
+  double equilibrium_ratio = 1e-3;
+  double max_hold_time = 0.0;   // µs, 0 → 5 × hold_time
+  double relax_time = 0.0;      // µs after the plate lost contact; 0: the released state is read at once
+  // Background damping −γ m v during the hold and the relaxation only (1/µs): it removes the
+  // kinetic energy a static reading must not have, without touching the loading (0: none).
+  double rest_drag_rate = 0.0;
+  double max_relax_time = 0.0;  // µs, 0 → 5 × relax_time
 };
 
 struct OutputSpec {
@@ -49,9 +74,10 @@ struct OutputSpec {
 struct Scenario {
   std::string source;             // file name, for messages
   std::string text;               // the file's text (its hash goes into checkpoints)
-  ContactSettings contact;
+  engine::ContactSettings contact;
   PackingSpec packing;
-  Box box;
+  std::vector<std::uint64_t> seeds;  // [packing] seeds: one run per seed (ensemble.hpp); empty: one run
+  engine::Box box;
   double mass_scaling = 1.0;      // density multiplier (quasi-static speed-up), docs/engine.md
   double material_density = 4.7e-3;  // ng/µm³ before scaling
   std::optional<double> dt;       // µs; default safety × Rayleigh estimate
@@ -71,4 +97,4 @@ struct Scenario {
 // The largest bounding radius and the smallest semi-axis the packing spec can produce.
 [[nodiscard]] double largest_bounding_radius(const PackingSpec& spec) noexcept;
 
-}  // namespace ellc::engine
+}  // namespace ellc::scenario

@@ -4,15 +4,20 @@
 #include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <limits>
 #include <sstream>
 
 #include "ellc/cases/case_file.hpp"
 #include "ellc/contact/contact_parameters.hpp"
+#include "ellc/scenario/ensemble.hpp"
 #include "ellc/scenario/scenario.hpp"
 #include "ellc/io/input_error.hpp"
 #include "ellc/io/table_reader.hpp"
+#include "ellc/material/material.hpp"
 
-namespace ellc::engine {
+namespace ellc::scenario {
+
+using engine::ContactSettings;
 
 double largest_bounding_radius(const PackingSpec& spec) noexcept {
   const double radius = spec.mean_radius * (1.0 + 2.0 * spec.radius_spread);
@@ -37,7 +42,8 @@ double non_negative_or(TableReader& table, std::string_view key, double fallback
   return table.non_negative(key);
 }
 
-// The shared contact-model vocabulary (src/ellc/contact/contact_parameters.hpp), plus the walls' μ.
+// The shared contact-model vocabulary (src/ellc/contact/contact_parameters.hpp), plus the walls' μ
+// under its older name (now [walls] friction).
 void read_contact(TableReader& table, ContactSettings& contact) {
   ContactModelBuilder builder(contact.model);
   for (const ContactParameterName& parameter : kContactParameters) {
@@ -54,6 +60,49 @@ void read_contact(TableReader& table, ContactSettings& contact) {
   }
   contact.model = builder.finish();
   contact.wall_friction = non_negative_or(table, "wall_friction", contact.wall_friction);
+  table.finish();
+}
+
+// [walls.material]: an elastic (or elastic–plastic) plate; without yield_stress it never yields.
+Material read_wall_material(TableReader& table) {
+  Material material;
+  material.youngs_modulus = table.positive("youngs_modulus");
+  material.poisson_ratio = table.number("poisson_ratio");
+  if (!(material.poisson_ratio > -1.0 && material.poisson_ratio < 0.5))
+    table.fail("poisson_ratio", material.poisson_ratio, "a Poisson ratio in the open interval (-1, 0.5)");
+  material.yield_stress = table.has("yield_stress") ? table.positive("yield_stress")
+                                                    : std::numeric_limits<double>::infinity();
+  table.finish();
+  return material;
+}
+
+// [walls]: what the plates are made of, material = "particle" (default: the particles' own
+// material, a mirror-image half-space), "rigid" or a [walls.material] table, and their μ.
+// `material` is the raw node of walls.material, to tell its two forms apart.
+void read_walls(TableReader& table, const toml::node* material, bool contact_gave_friction, ContactSettings& contact) {
+  constexpr const char* kMaterialChoices =
+      "one of \"particle\", \"rigid\", or a table [walls.material] with youngs_modulus, poisson_ratio and "
+      "optionally yield_stress";
+  if (material != nullptr && !material->is_table() && !material->is_string())
+    table.fail("material", material->is_number() ? "a number" : "a value of another type", kMaterialChoices);
+  if (material != nullptr && material->is_table()) {
+    auto sub_table = table.table("material");
+    contact.wall_material = read_wall_material(sub_table);
+  } else if (const std::string name = table.optional_string("material").value_or("particle"); name == "rigid") {
+    contact.wall_material = rigid_material();
+  } else if (name == "particle") {
+    contact.wall_material.reset();
+  } else {
+    table.fail("material", "\"" + name + "\"", kMaterialChoices);
+  }
+  if (table.has("friction")) {
+    const double friction = table.non_negative("friction");
+    if (contact_gave_friction)
+      table.fail("friction", friction,
+                 "one friction coefficient for the walls: [walls] friction or (the older name) [contact] "
+                 "wall_friction, not both");
+    contact.wall_friction = friction;
+  }
   table.finish();
 }
 
@@ -76,6 +125,7 @@ void read_packing(TableReader& table, Scenario& scenario) {
     scenario.warnings.push_back("packing.aspect extends outside the calibrated range 1:[0.5..2]:[0.5..2] of the "
                                 "transition fits (eq. 52-53); the law still evaluates");
   spec.seed = static_cast<std::uint64_t>(table.integer_at_least("seed", 0, 1));
+  scenario.seeds = read_packing_seeds(table);  // an ensemble over packing seeds (ensemble.hpp)
   scenario.material_density = table.positive("density");
   spec.insertion_fraction = positive_or(table, "insertion_fraction", spec.insertion_fraction);
   if (spec.insertion_fraction > 0.5) table.fail("insertion_fraction", spec.insertion_fraction, "a solid fraction in (0, 0.5]");
@@ -129,6 +179,26 @@ void read_calendering(TableReader& table, CalenderingSpec& spec) {
   spec.start_gap = non_negative_or(table, "start_gap", spec.start_gap);
   spec.release_fraction = non_negative_or(table, "release_fraction", spec.release_fraction);
   if (spec.release_fraction >= 1.0) table.fail("release_fraction", spec.release_fraction, "a fraction in [0, 1)");
+  spec.ramp_time = non_negative_or(table, "ramp_time", spec.ramp_time);
+  spec.approach_window = non_negative_or(table, "approach_window", spec.approach_window);
+  if (table.has("approach_solid_fraction")) {
+    spec.approach_solid_fraction = table.positive("approach_solid_fraction");
+    if (*spec.approach_solid_fraction >= 1.0)
+      table.fail("approach_solid_fraction", *spec.approach_solid_fraction, "a solid fraction in (0, 1)");
+  }
+  spec.servo_hold = table.choice("hold", {"fixed", "servo"}, "fixed") == "servo";
+  spec.servo_gain = positive_or(table, "servo_gain", spec.servo_gain);
+  spec.servo_tolerance = non_negative_or(table, "servo_tolerance", spec.servo_tolerance);
+  if (spec.servo_tolerance >= 0.5) table.fail("servo_tolerance", spec.servo_tolerance, "a relative pressure error in [0, 0.5)");
+  spec.equilibrium_ratio = positive_or(table, "equilibrium_ratio", spec.equilibrium_ratio);
+  spec.max_hold_time = non_negative_or(table, "max_hold_time", spec.max_hold_time);
+  if (spec.max_hold_time > 0.0 && spec.max_hold_time < spec.hold_time)
+    table.fail("max_hold_time", spec.max_hold_time, "a time >= hold_time = " + format_number(spec.hold_time) + " µs");
+  spec.relax_time = non_negative_or(table, "relax_time", spec.relax_time);
+  spec.rest_drag_rate = non_negative_or(table, "rest_drag_rate", spec.rest_drag_rate);
+  spec.max_relax_time = non_negative_or(table, "max_relax_time", spec.max_relax_time);
+  if (spec.max_relax_time > 0.0 && spec.max_relax_time < spec.relax_time)
+    table.fail("max_relax_time", spec.max_relax_time, "a time >= relax_time = " + format_number(spec.relax_time) + " µs");
   table.finish();
 }
 
@@ -161,6 +231,9 @@ void cross_check(const Scenario& scenario) {
                        "a plate gap > " + format_number(solid) +
                            " µm, the thickness of the solid alone (the walls would overlap the particles)");
   }
+  if (scenario.calendering.servo_hold && !scenario.calendering.target_pressure)
+    throw InputError(scenario.source, "calendering.hold", "\"servo\"",
+                     "\"fixed\", or a target_pressure for the servo to hold");
 }
 
 Scenario read(const toml::table& root_table, const std::string& source, std::string text) {
@@ -177,7 +250,13 @@ Scenario read(const toml::table& root_table, const std::string& source, std::str
     scenario.contact.model.hertz = spec.hertz;
     scenario.contact.model.law = spec.law;
   }
-  if (auto contact = root.optional_table("contact")) read_contact(*contact, scenario.contact);
+  bool contact_gave_wall_friction = false;
+  if (auto contact = root.optional_table("contact")) {
+    contact_gave_wall_friction = contact->has("wall_friction");
+    read_contact(*contact, scenario.contact);
+  }
+  if (auto walls = root.optional_table("walls"))
+    read_walls(*walls, root_table["walls"]["material"].node(), contact_gave_wall_friction, scenario.contact);
   {
     auto box = root.table("box");
     read_box(box, scenario);
@@ -213,4 +292,4 @@ Scenario parse_scenario(std::string_view toml_text, const std::string& source) {
   return read(parse_toml_text(toml_text, source), source, std::string(toml_text));
 }
 
-}  // namespace ellc::engine
+}  // namespace ellc::scenario

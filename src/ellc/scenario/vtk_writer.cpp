@@ -2,8 +2,13 @@
 
 #include <fstream>
 #include <stdexcept>
+#include <vector>
 
-namespace ellc::engine {
+namespace ellc::scenario {
+
+using engine::ContactView;
+using engine::ParticleSet;
+using engine::Simulation;
 
 void write_vtk_frame(const std::string& path, const Simulation& simulation) {
   std::ofstream out(path);
@@ -34,4 +39,37 @@ void write_vtk_frame(const std::string& path, const Simulation& simulation) {
   if (!out) throw std::runtime_error("writing " + path + " failed");
 }
 
-}  // namespace ellc::engine
+void write_vtk_contacts(const std::string& path, const Simulation& simulation) {
+  std::vector<ContactView> contacts;
+  simulation.for_each_contact([&](const ContactView& view) { contacts.push_back(view); });
+  std::ofstream out(path);
+  if (!out) throw std::runtime_error("cannot open " + path + " for writing");
+  const std::size_t n = contacts.size();
+  out.precision(9);
+  out << "# vtk DataFile Version 3.0\n"
+      << "ellc dem contacts step " << simulation.step_count() << " time " << simulation.time() << " us\n"
+      << "ASCII\nDATASET POLYDATA\nPOINTS " << 2 * n << " double\n";
+  for (const ContactView& c : contacts)
+    out << c.centre_i.x() << ' ' << c.centre_i.y() << ' ' << c.centre_i.z() << '\n'
+        << c.other.x() << ' ' << c.other.y() << ' ' << c.other.z() << '\n';
+  out << "LINES " << n << ' ' << 3 * n << '\n';
+  for (std::size_t k = 0; k < n; ++k) out << "2 " << 2 * k << ' ' << 2 * k + 1 << '\n';
+  if (n > 0) {  // without cells, no cell data
+    out << "CELL_DATA " << n << '\n';
+    const auto scalars = [&](const char* name, const char* type, auto&& value) {
+      out << "SCALARS " << name << ' ' << type << " 1\nLOOKUP_TABLE default\n";
+      for (const ContactView& c : contacts) out << value(c) << '\n';
+    };
+    scalars("normal_force", "double", [](const ContactView& c) { return c.normal_force; });
+    scalars("overlap", "double", [](const ContactView& c) { return c.overlap; });
+    scalars("max_overlap", "double", [](const ContactView& c) { return c.max_overlap; });
+    scalars("regime", "int", [](const ContactView& c) { return static_cast<int>(c.regime); });
+    scalars("size_ratio", "double", [](const ContactView& c) { return c.size_ratio; });
+    scalars("wall", "int", [](const ContactView& c) { return c.wall; });
+    out << "VECTORS force double\n";
+    for (const ContactView& c : contacts) out << c.force.x() << ' ' << c.force.y() << ' ' << c.force.z() << '\n';
+  }
+  if (!out) throw std::runtime_error("writing " + path + " failed");
+}
+
+}  // namespace ellc::scenario

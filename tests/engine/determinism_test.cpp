@@ -1,28 +1,17 @@
-// Results independent of the thread count, and restart equivalence, both bit for bit.
+// Results independent of the thread count and of skipping the pairs proven apart, bit for bit.
+// (Restart equivalence through the scenario runner: tests/scenario/restart_test.cpp.)
 
 #include <gtest/gtest.h>
 #include <omp.h>
 
-#include <cstdio>
-#include <filesystem>
-
-#include <unistd.h>
-
-#include "ellc/io/input_error.hpp"
-
 #include "ellc/engine/time_step.hpp"
 #include "engine_support.hpp"
+#include "support/simulation_state.hpp"
 
 namespace ellc::engine {
 namespace {
 
-using testing::in_memory;
-using testing::quick_scenario;
-using testing::quick_scenario_text;
-using testing::state_bytes;
-
-// The plate compacting the loose deposit: ~1300 steps of the quick example.
-constexpr std::uint64_t kSteps = 1300;
+using ellc::test::state_bytes;
 
 // The thread test: 100 ellipsoids inserted at 40 % solid with random velocities between a fixed
 // floor and a descending plate, every loop threaded (threshold 0): hundreds of collisions.
@@ -93,49 +82,6 @@ TEST(EngineDeterminism, SkippingPairsProvenApartChangesNothing) {
     EXPECT_TRUE(skipping.state == testing_all.state)
         << "skipping pairs proven apart changed the state (spheres mixed in: " << some_spheres << ")";
   }
-}
-
-TEST(EngineDeterminism, RestartReproducesUninterruptedRunBitwise) {
-  const Scenario scenario = quick_scenario(quick_scenario_text());
-  ScenarioRunner whole(scenario, in_memory(512));
-  whole.advance(kSteps);
-
-  const std::string checkpoint =
-      (std::filesystem::temp_directory_path() / ("ellc_restart_" + std::to_string(::getpid()) + ".bin")).string();
-  {
-    ScenarioRunner first(scenario, in_memory(512));
-    first.advance(kSteps / 2);
-    first.write_checkpoint(checkpoint);
-  }
-  RunOptions options = in_memory(512);
-  options.restart_path = checkpoint;
-  ScenarioRunner second(scenario, options);
-  EXPECT_EQ(second.simulation().step_count(), kSteps / 2);
-  second.advance(kSteps - kSteps / 2);
-  std::remove(checkpoint.c_str());
-
-  EXPECT_EQ(second.state().phase, whole.state().phase);
-  EXPECT_EQ(second.state().load_start_gap, whole.state().load_start_gap);
-  const std::string a = state_bytes(whole.simulation());
-  const std::string b = state_bytes(second.simulation());
-  ASSERT_EQ(a.size(), b.size());
-  EXPECT_TRUE(a == b) << "restarted run differs from the uninterrupted one";
-}
-
-TEST(EngineDeterminism, RestartRefusesAnotherScenario) {
-  const Scenario scenario = quick_scenario(quick_scenario_text());
-  const std::string checkpoint =
-      (std::filesystem::temp_directory_path() / ("ellc_other_" + std::to_string(::getpid()) + ".bin")).string();
-  {
-    ScenarioRunner first(scenario, in_memory(512));
-    first.advance(10);
-    first.write_checkpoint(checkpoint);
-  }
-  RunOptions options = in_memory();
-  options.restart_path = checkpoint;
-  const Scenario other = quick_scenario(testing::replace_line(quick_scenario_text(), "seed", "seed = 7"));
-  EXPECT_THROW(ScenarioRunner(other, options), InputError);
-  std::remove(checkpoint.c_str());
 }
 
 }  // namespace

@@ -4,39 +4,30 @@
 
 #include <string>
 
-#include "ellc/io/input_error.hpp"
-#include "engine_support.hpp"
+#include "scenario_support.hpp"
+#include "support/input_error.hpp"
 
-namespace ellc::engine {
+namespace ellc::scenario {
 namespace {
 
+using engine::RunawayError;
+using test::input_error_message;
 using testing::in_memory;
 using testing::quick_scenario;
 using testing::quick_scenario_text;
 using testing::replace_line;
 
-// The message of the InputError thrown by `action`, or "" if none was thrown.
-template <typename Action>
-std::string input_error(Action&& action) {
-  try {
-    action();
-  } catch (const InputError& error) {
-    return error.what();
-  }
-  return "";
-}
-
 TEST(EngineScenarioInput, QuickExampleIsValid) { EXPECT_NO_THROW(quick_scenario(quick_scenario_text())); }
 
 TEST(EngineScenarioInput, UnknownKeyIsNamed) {
   const std::string text = replace_line(quick_scenario_text(), "seed", "seed = 1\ncolour = \"blue\"");
-  const std::string message = input_error([&] { (void)quick_scenario(text); });
+  const std::string message = input_error_message([&] { (void)quick_scenario(text); });
   EXPECT_NE(message.find("packing.colour"), std::string::npos) << message;
 }
 
 TEST(EngineScenarioInput, ParticleLargerThanBoxIsNamed) {
   const std::string text = replace_line(quick_scenario_text(), "size", "size = [30.0, 42.0]");
-  const std::string message = input_error([&] { (void)quick_scenario(text); });
+  const std::string message = input_error_message([&] { (void)quick_scenario(text); });
   EXPECT_NE(message.find("box.size"), std::string::npos) << message;
   EXPECT_NE(message.find("too large"), std::string::npos) << message;
 }
@@ -44,22 +35,22 @@ TEST(EngineScenarioInput, ParticleLargerThanBoxIsNamed) {
 TEST(EngineScenarioInput, OverlappingWallsAreNamed) {
   const std::string text =
       replace_line(quick_scenario_text(), "target_pressure", "target_thickness = 5.0");
-  const std::string message = input_error([&] { (void)quick_scenario(text); });
+  const std::string message = input_error_message([&] { (void)quick_scenario(text); });
   EXPECT_NE(message.find("calendering.target_thickness"), std::string::npos) << message;
   const std::string negative =
       replace_line(quick_scenario_text(), "target_pressure", "target_thickness = -1.0");
-  EXPECT_NE(input_error([&] { (void)quick_scenario(negative); }).find("calendering.target_thickness"), std::string::npos);
+  EXPECT_NE(input_error_message([&] { (void)quick_scenario(negative); }).find("calendering.target_thickness"), std::string::npos);
 }
 
 TEST(EngineScenarioInput, BadValuesAreNamed) {
   const std::string text = replace_line(quick_scenario_text(), "friction", "friction = -0.3");
-  EXPECT_NE(input_error([&] { (void)quick_scenario(text); }).find("contact.friction"), std::string::npos);
+  EXPECT_NE(input_error_message([&] { (void)quick_scenario(text); }).find("contact.friction"), std::string::npos);
   const std::string shape = replace_line(quick_scenario_text(), "shape", "shape = \"cube\"");
-  EXPECT_NE(input_error([&] { (void)quick_scenario(shape); }).find("packing.shape"), std::string::npos);
+  EXPECT_NE(input_error_message([&] { (void)quick_scenario(shape); }).find("packing.shape"), std::string::npos);
   for (const char* step : {"0.0", "0.5"}) {  // a Newton step length in (0, 0.1] rad
     const std::string newton =
         replace_line(quick_scenario_text(), "friction", std::string("friction = 0.3\nnarrow_phase_final_step = ") + step);
-    EXPECT_NE(input_error([&] { (void)quick_scenario(newton); }).find("contact.narrow_phase_final_step"),
+    EXPECT_NE(input_error_message([&] { (void)quick_scenario(newton); }).find("contact.narrow_phase_final_step"),
               std::string::npos)
         << step;
   }
@@ -71,13 +62,13 @@ TEST(EngineScenarioInput, SettleMaxTimeZeroIsTheDefault) {
   const std::string zero = replace_line(quick_scenario_text(), "time = 0.0", "time = 10.0\nmax_time = 0.0");
   EXPECT_EQ(quick_scenario(zero).settle.max_time, 30.0);
   const std::string short_max = replace_line(quick_scenario_text(), "time = 0.0", "time = 10.0\nmax_time = 5.0");
-  EXPECT_NE(input_error([&] { (void)quick_scenario(short_max); }).find("settle.max_time"), std::string::npos);
+  EXPECT_NE(input_error_message([&] { (void)quick_scenario(short_max); }).find("settle.max_time"), std::string::npos);
 }
 
 TEST(EngineScenarioInput, TimeStepAboveEstimateNeedsForce) {
   const std::string text = replace_line(quick_scenario_text(), "safety", "safety = 0.2\ndt = 1.0");
   const Scenario scenario = quick_scenario(text);
-  const std::string message = input_error([&] { ScenarioRunner runner(scenario, in_memory()); });
+  const std::string message = input_error_message([&] { ScenarioRunner runner(scenario, in_memory()); });
   EXPECT_NE(message.find("time.dt"), std::string::npos) << message;
   EXPECT_NE(message.find("--force"), std::string::npos) << message;
   RunOptions forced = in_memory();
@@ -104,4 +95,4 @@ TEST(EngineScenarioInput, RunawayNamesParticleAndStep) {
 }
 
 }  // namespace
-}  // namespace ellc::engine
+}  // namespace ellc::scenario

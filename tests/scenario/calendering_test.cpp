@@ -3,9 +3,9 @@
 
 #include <gtest/gtest.h>
 
-#include "engine_support.hpp"
+#include "scenario_support.hpp"
 
-namespace ellc::engine {
+namespace ellc::scenario {
 namespace {
 
 using testing::in_memory;
@@ -47,4 +47,4 @@ TEST(EngineCalendering, SpringbackPositiveAndSmallerThanElastic) {
 }
 
 }  // namespace
-}  // namespace ellc::engine
+}  // namespace ellc::scenario

@@ -6,6 +6,7 @@
 #include "ellc/engine/broad_phase.hpp"
 #include "ellc/contact/contact_energy.hpp"
 #include "ellc/scenario/random.hpp"
+#include "support/nmc.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -13,6 +14,8 @@
 
 namespace ellc::engine {
 namespace {
+
+using scenario::Random;
 
 ParticleSet three_spheres(bool reversed) {
   ParticleSet particles;
@@ -55,8 +58,8 @@ TEST(EnginePairMap, DroppedActiveContactReleasesItsWork) {
   auto before = find_candidate_pairs(three_spheres(false), box, 0.1);
   ContactHistory& history = before[0].history;
   ContactCache& cache = before[0].cache;
-  cache.constants = make_contact_constants(mix(Material{142000.0, 0.25, 7900.0}, Material{142000.0, 0.25, 7900.0}),
-                                           {1.0, 1.0}, {1.0, 1.0}, 0.0, 2.0, HertzMode::hale);
+  cache.constants =
+      make_contact_constants(mix(test::kNmc, test::kNmc), {1.0, 1.0}, {1.0, 1.0}, 0.0, 2.0, HertzMode::hale);
   history.max_overlap = 10.0 * cache.constants.yield_overlap;
   const double work = plastic_work(cache.constants, history.max_overlap);
   EXPECT_GT(work, 0.0);

@@ -10,11 +10,18 @@
 #include <limits>
 #include <string>
 
-#include "engine_support.hpp"
+#include "scenario_support.hpp"
 
-namespace ellc::engine {
+namespace ellc::scenario {
 namespace {
 
+using engine::Box;
+using engine::ContactCounts;
+using engine::kBottomWall;
+using engine::kTopWall;
+using engine::PairSlot;
+using engine::ParticleSet;
+using engine::Simulation;
 using testing::in_memory;
 using testing::quick_scenario;
 using testing::quick_scenario_text;
@@ -160,4 +167,4 @@ TEST(EngineSettling, DepositComesToRestOnTheFloorWhichCarriesItsWeight) {
 }
 
 }  // namespace
-}  // namespace ellc::engine
+}  // namespace ellc::scenario

@@ -14,6 +14,7 @@
 namespace ellc::engine {
 namespace {
 
+using scenario::Random;
 using testing::free_settings;
 using testing::kNmc;
 using testing::kScaledDensity;
