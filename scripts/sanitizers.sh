@@ -4,7 +4,10 @@
 #   build-asan  ASan + UBSan (g++, libgomp): every C++ unit test of ctest. Not the Python, FE and
 #               LAMMPS tests: those run uninstrumented interpreters and programs (built OFF here).
 #   build-tsan  TSan (clang++-15, LLVM's libomp): the engine's thread-determinism tests
-#               (test_engine --gtest_filter=EngineDeterminism.*), 2 OpenMP threads.
+#               (test_engine --gtest_filter=EngineDeterminism.*), 2 OpenMP threads. Their dense
+#               1000-body run (tests/engine/test_threads.cpp) is the one in which both threads
+#               evaluate pairs in the same step; in the 100-body runs the first thread is through
+#               the dynamically scheduled pair list before the second has joined.
 #
 # TSan cannot see the synchronisation inside GCC's libgomp (not instrumented) and reports false
 # races at every barrier; LLVM's libomp with its OMPT tool Archer (libarcher.so, package

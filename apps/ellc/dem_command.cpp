@@ -46,6 +46,7 @@ struct DemOptions {
   long long max_steps = 0;
   std::string seeds;  // --seeds N: an ensemble of N consecutive packing seeds
   std::string jobs;   // --jobs J: ensemble members side by side
+  bool compare_hertz = false;  // --compare-hertz: the same packing again with plain Hertz
 };
 
 std::string clock_text(double seconds) {
@@ -146,7 +147,7 @@ void prefer_short_spinning() {
 #endif
 }
 
-void run_single(const DemOptions& options, scenario::Scenario loaded) {
+scenario::RunSummary run_single(const DemOptions& options, scenario::Scenario loaded) {
   scenario::RunOptions run_options;
   run_options.output_directory = options.output_directory;
   run_options.restart_path = options.restart_path;
@@ -178,6 +179,39 @@ void run_single(const DemOptions& options, scenario::Scenario loaded) {
     run_python_plot({"dem", (directory / "timeseries.csv").string(), png, "--title", options.scenario_path});
     std::printf("  plot: %s\n", png.c_str());
   }
+  return summary;
+}
+
+// --compare-hertz: the same scenario (same packing, same protocol) with the normal law replaced
+// by plain Hertz, into DIR/hertz; what plasticity changes, printed and in DIR/compare_hertz.txt.
+void compare_with_hertz(const DemOptions& options, const scenario::Scenario& loaded,
+                        const scenario::RunSummary& law, const std::string& directory) {
+  scenario::Scenario hertz = loaded;
+  hertz.contact.model.normal = NormalModel::hertz;
+  DemOptions quiet = options;
+  quiet.output_directory = (std::filesystem::path(directory) / "hertz").string();
+  quiet.quiet = true;
+  quiet.no_plot = true;
+  quiet.restart_path.clear();
+  std::printf("== the same packing with plain Hertz (--compare-hertz), into %s\n", quiet.output_directory.c_str());
+  const scenario::RunSummary elastic = run_single(quiet, std::move(hertz));
+  const auto row = [](const char* name, double a, double b, const char* unit) {
+    char text[160];
+    std::snprintf(text, sizeof text, "%-26s %12.6g %12.6g  %s\n", name, a, b, unit);
+    return std::string(text);
+  };
+  std::string table = "# ellc dem --compare-hertz: " + options.scenario_path + "\n";
+  table += "#                          becker_kamlah        hertz\n";
+  table += row("springback", law.springback_percent, elastic.springback_percent, "%");
+  table += row("loaded_thickness", law.loaded_thickness, elastic.loaded_thickness, "um");
+  table += row("final_thickness", law.final_thickness, elastic.final_thickness, "um");
+  table += row("held_pressure", law.held_pressure, elastic.held_pressure, "MPa");
+  table += row("plastic_dissipation", law.plastic_dissipation, elastic.plastic_dissipation, "pJ");
+  table += row("plate_work", law.plate_work, elastic.plate_work, "pJ (net over the cycle: what was dissipated)");
+  table += row("plastic_share_of_work", law.plate_work > 0 ? law.plastic_dissipation / law.plate_work : 0.0,
+               elastic.plate_work > 0 ? elastic.plastic_dissipation / elastic.plate_work : 0.0, "");
+  std::printf("%s", table.c_str());
+  std::ofstream((std::filesystem::path(directory) / "compare_hertz.txt").string()) << table;
 }
 
 // The whole of `text` as an integer, or an InputError naming the option.
@@ -304,9 +338,19 @@ void run_dem(const DemOptions& options) {
       throw InputError("", "--jobs", options.jobs,
                        "--seeds N or [packing] seeds with it: --jobs runs the members of an ensemble side by side "
                        "(-j sets the threads of one run)");
-    run_single(options, std::move(loaded));
+    if (options.compare_hertz && (options.max_steps > 0 || !options.restart_path.empty()))
+      throw InputError("", "--compare-hertz", "with --max-steps or --restart",
+                       "a whole run from a fresh packing (the Hertz run repeats it)");
+    const scenario::Scenario copy = options.compare_hertz ? loaded : scenario::Scenario{};
+    const scenario::RunSummary law = run_single(options, std::move(loaded));
+    if (options.compare_hertz && law.finished) {
+      const std::string directory = options.output_directory.empty() ? copy.output.directory : options.output_directory;
+      compare_with_hertz(options, copy, law, directory);
+    }
     return;
   }
+  if (options.compare_hertz)
+    throw InputError("", "--compare-hertz", "with an ensemble", "a single run (compare members one at a time)");
   if (options.max_steps > 0)
     throw InputError("", "--max-steps", std::to_string(options.max_steps),
                      "no --max-steps for an ensemble (every member runs to the end of the protocol)");
@@ -333,6 +377,8 @@ const RegisterCommand registration([](CLI::App& root) {
       ->check(CLI::PositiveNumber);
   command->add_option("--seeds", options->seeds,
                       "Run an ensemble: N packing seeds from [packing] seed (seed, seed+1, ...), each in DIR/seed_<s>/");
+  command->add_flag("--compare-hertz", options->compare_hertz,
+                    "Run the same packing again with plain Hertz and compare springback and energies");
   command->add_option("--jobs", options->jobs, "Ensemble members run side by side (default 1; one engine thread each)");
   command->callback([options] { run_dem(*options); });
 });

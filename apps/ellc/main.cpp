@@ -16,10 +16,9 @@ int main(int argc, char** argv) {
   CLI::App app{"ellc: normal contact force between elastoplastic ellipsoids (Becker & Kamlah)"};
   app.require_subcommand(1);
   // The version, and where the plots' Python package comes from (an installed CLI uses its own).
-  const std::function<std::string()> version = [] {
+  app.set_version_flag("--version", std::function<std::string()>([] {
     return std::string("ellc ") + ELLC_VERSION + "\n" + ellc::cli::plot_setup_description();
-  };
-  app.set_version_flag("--version", version);
+  }));
   for (const auto& setup : ellc::cli::command_setups()) setup(app);
   try {
     app.parse(argc, argv);

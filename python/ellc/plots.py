@@ -1,20 +1,19 @@
 """The figures of the ellc tools, from arrays, and their command line.
 
 Each figure the C++ tools draw is a function of numpy arrays (or lists) that returns the
-matplotlib Figure (or draws into given axes), so the same figure can be made in Python from
-computed results:
+matplotlib Figure, so the same figure can be made in Python from computed results:
 
 * :func:`curve_figure`     ``ellc curve --plot``: F/F_pY against delta/delta_Y (Fig. 13, 15)
 * :func:`fit_figures`      ``ellc fit --plot PREFIX``: lambda profiles (Fig. 11), radius fits (Fig. 12)
 * :func:`dem_figure`       ``ellc dem``'s pressure_thickness.png: plate pressure against thickness
-  and the energies over time
-* :func:`plot_pressure_thickness_ensemble`  the members of ``ellc dem --seeds N`` on one axes
 * :func:`pressure_figure`  pressure along a_c and b_c and the contact ellipses (Fig. 4, 9, 14)
 
 The command line reads the CSV tables the tools write and calls these functions; the CLI runs it as
 ``python3 -m ellc.plots curve IN.csv OUT.png`` (subcommands ``curve``, ``fit PREFIX``,
-``pressure CASE.toml OUT.png``, which needs the compiled module, ``dem CSV OUT.png`` and
-``dem-ensemble OUT.png CSV...``). The single panels live in ellc.figures.
+``pressure CASE.toml OUT.png``, which needs the compiled module, ``dem IN.csv OUT.png``, and
+``dem-ensemble OUT.png CSV...`` for the members of ``ellc dem --seeds N``, drawn by
+:func:`plot_pressure_thickness_ensemble`).
+The single panels live in ellc.figures.
 """
 
 import argparse
@@ -83,23 +82,24 @@ def fit_figures(panels, radius_ratio, lambda_max, epsilon_max, curve_ratio, lamb
     return lambda_figure, radius_figure
 
 
-def dem_figure(columns, title=None):
+# The energy-balance columns of timeseries.csv (ellc dem), drawn when all are given.
+ENERGY_COLUMNS = ("work_bottom_plate", "work_top_plate", "gravity_work", "elastic_energy", "spring_energy",
+                  "friction_dissipation", "damping_dissipation", "drag_dissipation", "energy_residual")
+
+
+def dem_figure(thickness, plate_pressure, phase, time, kinetic_energy, plastic_dissipation, title=None,
+               energies=None):
     """Calendering as ``ellc dem`` draws it (pressure_thickness.png); returns the Figure.
 
-    ``columns`` maps the column names of ``timeseries.csv`` to arrays (or lists) of one length:
-    ``thickness``, ``plate_pressure``, ``phase`` (``"load"``, ``"hold"``, ``"unload"``), ``time``,
-    ``kinetic_energy`` and ``plastic_dissipation``; when it also has ``energy_residual``, the energy
-    balance's terms too (``work_bottom_plate``, ``work_top_plate``, ``gravity_work``,
-    ``elastic_energy``, ``spring_energy``, ``friction_dissipation``, ``damping_dissipation``,
-    ``drag_dissipation``). Left: plate pressure [MPa] against layer thickness [um], one colour per
-    phase, zoomed on where the pressure exceeds 1 % of its maximum. Right: the energies [pJ]
-    against time [us].
+    Left: plate pressure [MPa] against layer thickness [um], one colour per ``phase`` (``"load"``,
+    ``"hold"``, ``"unload"``), zoomed on where the pressure exceeds 1 % of its maximum. Right: the
+    kinetic and the plastically dissipated energy [pJ] against ``time`` [us], and with
+    ``energies`` (a dict of the ENERGY_COLUMNS) the whole energy balance. The arguments are the
+    columns of ``timeseries.csv`` of the same names.
     """
-    def column(name):
-        return np.asarray(columns[name], dtype=float)
-
-    thickness, pressure = column("thickness"), column("plate_pressure")
-    phase = np.asarray(columns["phase"], dtype=str)
+    thickness = np.asarray(thickness, dtype=float)
+    pressure = np.asarray(plate_pressure, dtype=float)
+    phase = np.asarray(phase, dtype=str)
     figure, (left, right) = plt.subplots(1, 2, figsize=(11, 4.4), dpi=110)
     colours = {"load": "tab:blue", "hold": "tab:orange", "unload": "tab:green"}
     for name, colour in colours.items():
@@ -119,18 +119,17 @@ def dem_figure(columns, title=None):
     left.set_ylim(bottom=0)
     left.grid(alpha=0.3)
     left.legend(loc="upper right")
-    time = column("time")
-    right.plot(time, column("kinetic_energy"), color="tab:red", label="kinetic")
-    right.plot(time, column("plastic_dissipation"), color="tab:purple", label="plastically dissipated")
-    if "energy_residual" in columns:  # the energy balance (ellc dem since the diagnostics columns)
-        work = column("work_bottom_plate") + column("work_top_plate") + column("gravity_work")
-        right.plot(time, work, color="black", lw=1.2, label="work of plates and gravity")
-        right.plot(time, column("elastic_energy") + column("spring_energy"), color="tab:blue",
+    right.plot(time, kinetic_energy, color="tab:red", label="kinetic")
+    right.plot(time, plastic_dissipation, color="tab:purple", label="plastically dissipated")
+    if energies is not None:
+        e = {name: np.asarray(values, dtype=float) for name, values in energies.items()}
+        right.plot(time, e["work_bottom_plate"] + e["work_top_plate"] + e["gravity_work"], color="black", lw=1.2,
+                   label="work of plates and gravity")
+        right.plot(time, e["elastic_energy"] + e["spring_energy"], color="tab:blue",
                    label="stored elastic (law and springs)")
-        right.plot(time, column("friction_dissipation"), color="tab:olive", label="friction")
-        right.plot(time, column("damping_dissipation") + column("drag_dissipation"), color="tab:cyan",
-                   label="dashpots and drag")
-        right.plot(time, column("energy_residual"), ":", color="tab:gray", label="residual of the balance")
+        right.plot(time, e["friction_dissipation"], color="tab:olive", label="friction")
+        right.plot(time, e["damping_dissipation"] + e["drag_dissipation"], color="tab:cyan", label="dashpots and drag")
+        right.plot(time, e["energy_residual"], ":", color="tab:gray", label="residual of the balance")
     right.set_xlabel("time [us]")
     right.set_ylabel("energy [pJ]")
     right.set_yscale("symlog", linthresh=1.0)
@@ -207,7 +206,10 @@ def dem_command(args):
     load, hold and unload, and the energies over time (with the energy balance's terms and its
     residual when the CSV has them)."""
     columns = read_columns(args.csv)
-    _save(dem_figure(columns, title=args.title), args.png)
+    energies = {name: columns[name] for name in ENERGY_COLUMNS if name in columns}
+    _save(dem_figure(columns["thickness"], columns["plate_pressure"], columns["phase"], columns["time"],
+                     columns["kinetic_energy"], columns["plastic_dissipation"], title=args.title,
+                     energies=energies if len(energies) == len(ENERGY_COLUMNS) else None), args.png)
     return 0
 
 

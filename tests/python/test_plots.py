@@ -84,14 +84,8 @@ def test_cli_figures_from_arrays(tmp_path):
 
     phase = ["load"] * 6 + ["hold"] * 3 + ["unload"] * 4
     count = len(phase)
-    columns = {"thickness": np.linspace(100.0, 80.0, count), "plate_pressure": np.linspace(0.0, 50.0, count),
-               "phase": phase, "time": np.arange(count, dtype=float), "kinetic_energy": np.ones(count),
-               "plastic_dissipation": np.linspace(0.0, 5.0, count)}
-    figure = plots.dem_figure(columns)
+    figure = plots.dem_figure(np.linspace(100.0, 80.0, count), np.linspace(0.0, 50.0, count), phase,
+                              np.arange(count, dtype=float), np.ones(count), np.linspace(0.0, 5.0, count))
     assert [len(axes.lines) for axes in figure.axes] == [3, 2]
-    balance = ["work_bottom_plate", "work_top_plate", "gravity_work", "elastic_energy", "spring_energy",
-               "friction_dissipation", "damping_dissipation", "drag_dissipation", "energy_residual"]
-    figure = plots.dem_figure(columns | {name: np.zeros(count) for name in balance}, title="with the balance")
-    assert [len(axes.lines) for axes in figure.axes] == [3, 7]
     assert plots.pressure_figure(contact, path).axes[2].get_aspect() == 1.0
     plt.close("all")

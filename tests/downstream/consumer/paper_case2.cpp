@@ -43,8 +43,8 @@ ellc::ContactConstants paper_case2_constants() {
   const Eigen::Vector3d axes_j = semi_axes({1.0, 1.25, 1.25}, 10.0);
   const ellc::TipContact tip = ellc::tip_contact({axes_i, 0.0}, {axes_j, 0.0});
   return ellc::make_contact_constants(ellc::mix(nmc, nmc), tip.body_i, tip.body_j, tip.alpha,
-                                      ellc::mean_radius(axes_i) + ellc::mean_radius(axes_j), ellc::HertzMode::hale,
-                                      ellc::LawParameters{});
+                                      ellc::mean_radius(axes_i) + ellc::mean_radius(axes_j),
+                                      ellc::HertzMode::hale, ellc::LawParameters{});
 }
 
 bool close(double value, double reference) {
@@ -81,8 +81,8 @@ std::vector<Row> read_curve_csv(const std::string& path) {
 
 int compare_with_case_file(const ellc::ContactConstants& expected, const std::string& path) {
   const ellc::CurveCase curve_case = ellc::read_curve_case(path);
-  const ellc::ContactConstants read =
-      ellc::case_contact_constants(curve_case.body_i, curve_case.body_j, curve_case.model.hertz, curve_case.model.law);
+  const ellc::ContactConstants read = ellc::case_contact_constants(
+      curve_case.body_i, curve_case.body_j, curve_case.model.hertz, curve_case.model.law);
   int failures = 0;
   for (const auto& [name, value, reference] :
        {std::tuple{"yield_overlap", read.yield_overlap, expected.yield_overlap},
