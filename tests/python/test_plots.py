@@ -87,5 +87,10 @@ def test_cli_figures_from_arrays(tmp_path):
     figure = plots.dem_figure(np.linspace(100.0, 80.0, count), np.linspace(0.0, 50.0, count), phase,
                               np.arange(count, dtype=float), np.ones(count), np.linspace(0.0, 5.0, count))
     assert [len(axes.lines) for axes in figure.axes] == [3, 2]
+    energies = {name: np.linspace(0.0, 1.0, count) for name in plots.ENERGY_COLUMNS}
+    figure = plots.dem_figure(np.linspace(100.0, 80.0, count), np.linspace(0.0, 50.0, count), phase,
+                              np.arange(count, dtype=float), np.ones(count), np.linspace(0.0, 5.0, count),
+                              title="with the energy balance", energies=energies)
+    assert [len(axes.lines) for axes in figure.axes] == [3, 7]  # kinetic, plastic, the balance's five
     assert plots.pressure_figure(contact, path).axes[2].get_aspect() == 1.0
     plt.close("all")
