@@ -7,7 +7,7 @@
 #    and prints the package's control fields and file list.
 # 2. `apt-get install --simulate ./ellc_*.deb` on this machine: every Depends resolves in its apt
 #    sources.
-# 3. A clean root: a minimal Debian bookworm made by debootstrap from deb.debian.org (kept in
+# 3. A clean root: a minimal Debian bookworm made by debootstrap from the Debian archive this machine's apt uses (kept in
 #    BUILD_DIR/deb-check/base and copied fresh for each run). In it, first
 #    `apt-get install --no-install-recommends ./ellc_*.deb` (the Depends alone), then these must work:
 #      ellc --help; ellc --version (plots from /usr/lib/python3/dist-packages);
@@ -37,7 +37,15 @@ if [[ ${1:-} == --extract ]]; then mode=extract; shift; fi
 build=${1:-build}
 jobs=${JOBS:-$(nproc)}
 suite=bookworm
-mirror=http://deb.debian.org/debian
+# The Debian archives this machine's apt uses (deb822 .sources or the classic sources.list).
+apt_uri() {
+  local pattern=$1
+  { grep -hE '^URIs:' /etc/apt/sources.list.d/*.sources 2>/dev/null | awk '{print $2}'
+    grep -hE '^deb ' /etc/apt/sources.list 2>/dev/null | awk '{print $2}'; } | grep -E "$pattern" | head -1
+}
+mirror=${DEB_MIRROR:-$(apt_uri 'debian/?$')}
+security_mirror=${DEB_SECURITY_MIRROR:-$(apt_uri 'debian-security/?$')}
+[[ -n $mirror ]] || { echo "check_deb: no Debian archive in /etc/apt (set DEB_MIRROR)" >&2; exit 2; }
 
 # --- 1. the package ---------------------------------------------------------------------------
 if [[ ! -f $build/CMakeCache.txt ]]; then
@@ -142,7 +150,7 @@ if [[ ! -f $base/.complete ]]; then
   cat >"$base/etc/apt/sources.list" <<EOF
 deb $mirror $suite main
 deb $mirror $suite-updates main
-deb http://deb.debian.org/debian-security $suite-security main
+${security_mirror:+deb $security_mirror $suite-security main}
 EOF
   touch "$base/.complete"
 fi
