@@ -85,8 +85,14 @@ run_tsan() {
   cmake -S . -B build-tsan "${generator[@]}" "${common[@]}" -DELLC_SANITIZE=thread \
         -DCMAKE_CXX_COMPILER=clang++-15 >/dev/null
   cmake --build build-tsan -j "$jobs" --target test_engine
+  local tests
+  tests=$(build-tsan/tests/engine/test_engine --gtest_filter="$filter" --gtest_list_tests | sed -n 's/^  //p')
+  if [[ -z $tests ]]; then  # a filter that matches nothing would pass without testing anything
+    echo "sanitizers: no test of test_engine matches $filter" >&2
+    exit 1
+  fi
   echo "== sanitizers: TSan (build-tsan, Debug -O1, clang++-15 + libomp/Archer): test_engine" \
-       "--gtest_filter='$filter', OMP_NUM_THREADS=$OMP_NUM_THREADS"
+       "--gtest_filter='$filter', OMP_NUM_THREADS=$OMP_NUM_THREADS, $(wc -l <<<"$tests") tests:" $tests
   build-tsan/tests/engine/test_engine --gtest_filter="$filter"
   echo "== sanitizers: TSan passed ($filter) in $(($(seconds) - start)) s"
 }
