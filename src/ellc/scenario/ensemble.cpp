@@ -305,7 +305,7 @@ void write_ensemble_summary_csv(std::ostream& out, const EnsembleResult& result)
 std::string write_ensemble_summary(const EnsembleResult& result) {
   std::filesystem::create_directories(result.directory);
   const auto directory = std::filesystem::path(result.directory);
-  const std::string text_path = (directory / "ensemble_summary.txt").string();
+  std::string text_path = (directory / "ensemble_summary.txt").string();
   const std::string csv_path = (directory / "ensemble_summary.csv").string();
   std::ofstream text(text_path);
   write_ensemble_summary_text(text, result);

@@ -1,5 +1,7 @@
 #include "ellc/scenario/scenario_runner.hpp"
 
+#include <utility>
+
 #include "ellc/engine/time_step.hpp"
 #include "ellc/io/input_error.hpp"
 #include "ellc/scenario/checkpoint.hpp"
@@ -44,7 +46,7 @@ ScenarioRunner::ScenarioRunner(Scenario scenario, RunOptions options)
 }
 
 void ScenarioRunner::restore(EngineSettings settings) {
-  Checkpoint checkpoint = read_checkpoint(options_.restart_path, scenario_, settings);
+  Checkpoint checkpoint = read_checkpoint(options_.restart_path, scenario_, std::move(settings));
   simulation_ = std::move(checkpoint.simulation);
   dt_estimate_ = checkpoint.dt_estimate;
   protocol_.restore(checkpoint.protocol, *simulation_);
