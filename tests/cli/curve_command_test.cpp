@@ -11,23 +11,13 @@
 
 #include "ellc/cases/case_file.hpp"
 
+#include "support/cli_run.hpp"
+
 namespace {
 namespace fs = std::filesystem;
 
-struct CliRun {
-  int exit_code;
-  std::string output;  // stdout + stderr
-};
-
-CliRun run_cli(const std::string& arguments) {
-  const std::string command = std::string(ELLC_CLI_PATH) + " " + arguments + " 2>&1";
-  FILE* pipe = popen(command.c_str(), "r");
-  std::string output;
-  char buffer[4096];
-  while (std::fgets(buffer, sizeof buffer, pipe) != nullptr) output += buffer;
-  const int status = pclose(pipe);
-  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, output};
-}
+using ellc::test::CliRun;
+using ellc::test::run_cli;
 
 const char* kGoodCase = R"(
 [material]
