@@ -114,5 +114,44 @@ TEST(EnginePairMap, CellListEqualsBruteForceSortedByKey) {
   }
 }
 
+// Issue 19: the cell grid is sparse and its indices 64-bit, so memory follows the particles, not
+// the box. Spheres of radius 1e-4 µm in a 4·10⁵ µm box would need ~10¹⁸ dense cells (an `int`
+// cell count overflowed, and a 4·10⁵ µm box of ordinary particles took 3.9 GB): clusters of
+// touching tiny spheres, one across each periodic boundary, are found exactly as by brute force.
+TEST(EnginePairMap, TinyParticlesInAHugeBoxNeedMemoryForTheParticlesOnly) {
+  const Box box{4e5, 4e5};
+  const double radius = 1e-4;
+  Random random(7);
+  ParticleSet particles;
+  std::uint32_t id = 0;
+  const auto add = [&](const Eigen::Vector3d& centre) {
+    particles.add(id++, Eigen::Vector3d::Constant(radius), 1.0, centre, Eigen::Quaterniond::Identity());
+  };
+  for (int cluster = 0; cluster < 200; ++cluster) {  // a chain of three touching spheres each
+    const Eigen::Vector3d start(random.uniform(0.0, box.lx - 1.0), random.uniform(0.0, box.ly - 1.0),
+                                random.uniform(0.0, 1e5));
+    for (int k = 0; k < 3; ++k) add(start + Eigen::Vector3d(1.9 * radius * k, 0.0, 0.0));
+  }
+  add({box.lx - 0.5 * radius, 10.0, 3.0});  // across x = 0 from the next one
+  add({0.5 * radius, 10.0, 3.0});
+  add({20.0, box.ly - 0.5 * radius, 3.0});  // across y = 0
+  add({20.0, 0.5 * radius, 3.0});
+  const double skin = 0.1 * radius;
+  const auto pairs = find_candidate_pairs(particles, box, skin, true);
+  std::vector<PairKey> expected;
+  const auto image = [](double d, double length) { return d - length * std::round(d / length); };
+  for (std::size_t a = 0; a < particles.size(); ++a)
+    for (std::size_t b = a + 1; b < particles.size(); ++b) {
+      const Eigen::Vector3d raw = particles.position[b] - particles.position[a];
+      const Eigen::Vector3d d(image(raw.x(), box.lx), image(raw.y(), box.ly), raw.z());
+      const double reach = 2.0 * radius + skin;
+      if (d.squaredNorm() < reach * reach) expected.push_back(pair_key(particles.id[a], particles.id[b]));
+    }
+  std::sort(expected.begin(), expected.end());
+  ASSERT_EQ(expected.size(), 200U * 2U + 2U);  // two pairs per chain, one per boundary
+  ASSERT_EQ(pairs.size(), expected.size());
+  for (std::size_t k = 0; k < expected.size(); ++k) EXPECT_EQ(pairs[k].key, expected[k]);
+}
+
 }  // namespace
 }  // namespace ellc::engine

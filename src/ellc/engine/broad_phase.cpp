@@ -5,8 +5,11 @@
 #include "ellc/engine/invariants.hpp"
 
 #include <algorithm>
+#include <array>
+#include <cstdint>
 #include <cmath>
 #include <numeric>
+#include <utility>
 
 #ifdef _OPENMP
 #include <omp.h>
@@ -16,21 +19,37 @@ namespace ellc::engine {
 
 namespace {
 
+// A sparse cell grid: only occupied cells exist (a hash table of cell keys → runs of the sorted
+// slots), so memory follows the particles, not the box. Cell coordinates are 64-bit and at most
+// kMaxCellsPerAxis per axis (wider cells when the box is wider: more distance tests, never a
+// missed pair), so no count overflows for any box or particle size (issue 19: a dense grid of a
+// 4·10⁵ µm box took 3.9 GB, and an `int` cell count overflowed at mean_radius = 1e-4).
+constexpr std::int64_t kMaxCellsPerAxis = std::int64_t{1} << 21;  // three coordinates fit a 64-bit key
+
 struct CellGrid {
-  int nx = 1, ny = 1, nz = 1;
+  std::int64_t nx = 1, ny = 1, nz = 1;
   double cell_x = 1.0, cell_y = 1.0, cell_z = 1.0, z_min = 0.0;
 
-  [[nodiscard]] int index(int ix, int iy, int iz) const noexcept { return (iz * ny + iy) * nx + ix; }
-  [[nodiscard]] int count() const noexcept { return nx * ny * nz; }
-  [[nodiscard]] int clamp_cell(double coordinate, double origin, double size, int n) const noexcept {
-    const int cell = static_cast<int>(std::floor((coordinate - origin) / size));
-    return std::clamp(cell, 0, n - 1);
+  [[nodiscard]] static std::uint64_t key(std::int64_t ix, std::int64_t iy, std::int64_t iz) noexcept {
+    return (static_cast<std::uint64_t>(iz) << 42U) | (static_cast<std::uint64_t>(iy) << 21U) |
+           static_cast<std::uint64_t>(ix);
   }
-  [[nodiscard]] int cell_of(const Eigen::Vector3d& x) const noexcept {
-    return index(clamp_cell(x.x(), 0.0, cell_x, nx), clamp_cell(x.y(), 0.0, cell_y, ny),
-                 clamp_cell(x.z(), z_min, cell_z, nz));
+  [[nodiscard]] static std::int64_t clamp_cell(double coordinate, double origin, double size, std::int64_t n) noexcept {
+    const double cell = std::floor((coordinate - origin) / size);
+    if (!(cell > 0.0)) return 0;  // also NaN
+    return cell >= static_cast<double>(n - 1) ? n - 1 : static_cast<std::int64_t>(cell);
+  }
+  [[nodiscard]] std::array<std::int64_t, 3> cell_of(const Eigen::Vector3d& x) const noexcept {
+    return {clamp_cell(x.x(), 0.0, cell_x, nx), clamp_cell(x.y(), 0.0, cell_y, ny), clamp_cell(x.z(), z_min, cell_z, nz)};
   }
 };
+
+// Cells along an extent: as many as fit cell_size (at least 1, at most kMaxCellsPerAxis).
+std::int64_t cells_along(double extent, double cell_size) noexcept {
+  const double fit = std::floor(extent / cell_size);
+  if (!(fit >= 1.0)) return 1;
+  return fit >= static_cast<double>(kMaxCellsPerAxis) ? kMaxCellsPerAxis : static_cast<std::int64_t>(fit);
+}
 
 CellGrid make_grid(const ParticleSet& particles, const Box& box, double cell_size) {
   CellGrid grid;
@@ -40,23 +59,79 @@ CellGrid make_grid(const ParticleSet& particles, const Box& box, double cell_siz
     z_min = std::min(z_min, x.z());
     z_max = std::max(z_max, x.z());
   }
-  grid.nx = std::max(1, static_cast<int>(box.lx / cell_size));
-  grid.ny = std::max(1, static_cast<int>(box.ly / cell_size));
-  grid.nz = std::max(1, static_cast<int>((z_max - z_min) / cell_size) + 1);
-  grid.cell_x = box.lx / grid.nx;
-  grid.cell_y = box.ly / grid.ny;
-  grid.cell_z = cell_size;
+  grid.nx = cells_along(box.lx, cell_size);
+  grid.ny = cells_along(box.ly, cell_size);
+  grid.cell_x = box.lx / static_cast<double>(grid.nx);
+  grid.cell_y = box.ly / static_cast<double>(grid.ny);
+  // z is open: cells of cell_size from the lowest centre, wider if the column needs more than
+  // the cap (cells at least cell_size wide always hold all partners in the 3 around).
+  const double z_cells = std::floor((z_max - z_min) / cell_size) + 1.0;
+  grid.nz = z_cells < static_cast<double>(kMaxCellsPerAxis) ? static_cast<std::int64_t>(z_cells) : kMaxCellsPerAxis;
+  grid.cell_z = grid.nz < kMaxCellsPerAxis
+                    ? cell_size
+                    : std::max(cell_size, (z_max - z_min) / static_cast<double>(kMaxCellsPerAxis - 1));
   grid.z_min = z_min;
   return grid;
 }
 
+// The occupied cells: the slots sorted by cell key, each cell one run of that order, found
+// through an open-addressing hash table (linear probing, at most half full).
+class OccupiedCells {
+ public:
+  OccupiedCells(const std::vector<std::uint64_t>& key_of_slot, std::vector<std::uint32_t>& sorted) {
+    const std::size_t count = key_of_slot.size();
+    std::vector<std::pair<std::uint64_t, std::uint32_t>> by_cell(count);
+    for (std::size_t slot = 0; slot < count; ++slot) by_cell[slot] = {key_of_slot[slot], static_cast<std::uint32_t>(slot)};
+    std::sort(by_cell.begin(), by_cell.end());
+    sorted.resize(count);
+    for (std::size_t k = 0; k < count; ++k) {
+      sorted[k] = by_cell[k].second;
+      if (k == 0 || by_cell[k].first != by_cell[k - 1].first) {
+        keys_.push_back(by_cell[k].first);
+        begin_.push_back(k);
+      }
+    }
+    begin_.push_back(count);
+    std::size_t capacity = 16;
+    shift_ = 60;
+    while (capacity < 2 * keys_.size()) {
+      capacity *= 2;
+      --shift_;
+    }
+    mask_ = capacity - 1;
+    table_.assign(capacity, kEmpty);
+    for (std::size_t cell = 0; cell < keys_.size(); ++cell) {
+      std::size_t at = bucket(keys_[cell]);
+      while (table_[at] != kEmpty) at = (at + 1) & mask_;
+      table_[at] = cell;
+    }
+  }
+  // The run [first, last) of the sorted slots in the cell with this key (empty if unoccupied).
+  [[nodiscard]] std::pair<std::size_t, std::size_t> run(std::uint64_t key) const noexcept {
+    for (std::size_t at = bucket(key); table_[at] != kEmpty; at = (at + 1) & mask_)
+      if (keys_[table_[at]] == key) return {begin_[table_[at]], begin_[table_[at] + 1]};
+    return {0, 0};
+  }
+
+ private:
+  static constexpr std::size_t kEmpty = ~std::size_t{0};
+  [[nodiscard]] std::size_t bucket(std::uint64_t key) const noexcept {
+    return static_cast<std::size_t>((key * 0x9E3779B97F4A7C15ULL) >> shift_);  // Fibonacci hashing
+  }
+  std::vector<std::uint64_t> keys_;
+  std::vector<std::size_t> begin_;
+  std::vector<std::size_t> table_;
+  std::size_t mask_ = 0;
+  unsigned shift_ = 60;  // 64 − log2(capacity)
+};
+
 // Distinct neighbour offsets along one axis (wrapping when periodic, clipped otherwise). Cells
 // span the largest reach 2 R_max + skin, so partners lie in the 3³ cells around a particle's own.
 // (5³ half-size cells, scanning 58 % of that volume, measured no faster on a dense 10⁴ packing.)
-int neighbour_cells(int cell, int n, bool periodic, int out[3]) {
+int neighbour_cells(std::int64_t cell, std::int64_t n, bool periodic, std::int64_t out[3]) {
   int count = 0;
-  for (int offset = -1; offset <= 1; ++offset) {
-    int other = cell + offset;
+  for (std::int64_t offset = -1; offset <= 1; ++offset) {
+    std::int64_t other = cell + offset;
     if (periodic) {
       other = (other % n + n) % n;
     } else if (other < 0 || other >= n) {
@@ -103,19 +178,15 @@ void find_candidate_pairs(const ParticleSet& particles, const Box& box, double s
   const double max_radius = *std::max_element(particles.bounding_radius.begin(), particles.bounding_radius.end());
   const CellGrid grid = make_grid(particles, box, 2.0 * max_radius + skin);
 
-  // Counting sort of the slots by cell.
-  std::vector<int> cell_of(count);
-  std::vector<int> cell_start(static_cast<std::size_t>(grid.count()) + 1, 0);
+  // The slots sorted by cell, and the occupied cells.
+  std::vector<std::array<std::int64_t, 3>> cell_of(count);
+  std::vector<std::uint64_t> key_of_slot(count);
   for (std::size_t slot = 0; slot < count; ++slot) {
     cell_of[slot] = grid.cell_of(particles.position[slot]);
-    ++cell_start[static_cast<std::size_t>(cell_of[slot]) + 1];
+    key_of_slot[slot] = CellGrid::key(cell_of[slot][0], cell_of[slot][1], cell_of[slot][2]);
   }
-  for (int cell = 0; cell < grid.count(); ++cell) cell_start[cell + 1] += cell_start[cell];
-  std::vector<std::uint32_t> sorted(count);
-  {
-    std::vector<int> fill(cell_start.begin(), cell_start.end() - 1);
-    for (std::size_t slot = 0; slot < count; ++slot) sorted[fill[cell_of[slot]]++] = static_cast<std::uint32_t>(slot);
-  }
+  std::vector<std::uint32_t> sorted;
+  const OccupiedCells cells(key_of_slot, sorted);
 
   // The list must come out sorted by key (id_i, id_j). Visiting the particles in id order and
   // sorting each one's few partners by id gives that order directly: contiguous blocks of the
@@ -161,11 +232,8 @@ void find_candidate_pairs(const ParticleSet& particles, const Box& box, double s
       const Eigen::Vector3d centre = particles.position[p];
       const double radius_p = particles.bounding_radius[p];
       const std::uint32_t id_p = id[p];
-      const int cell = cell_of[p];
-      const int ix = cell % grid.nx;
-      const int iy = (cell / grid.nx) % grid.ny;
-      const int iz = cell / (grid.nx * grid.ny);
-      int nxs[3], nys[3], nzs[3];
+      const auto [ix, iy, iz] = cell_of[p];
+      std::int64_t nxs[3], nys[3], nzs[3];
       const int cx = neighbour_cells(ix, grid.nx, true, nxs);
       const int cy = neighbour_cells(iy, grid.ny, true, nys);
       const int cz = neighbour_cells(iz, grid.nz, false, nzs);
@@ -173,9 +241,9 @@ void find_candidate_pairs(const ParticleSet& particles, const Box& box, double s
       for (int kz = 0; kz < cz; ++kz)
         for (int ky = 0; ky < cy; ++ky)
           for (int kx = 0; kx < cx; ++kx) {
-            const int other = grid.index(nxs[kx], nys[ky], nzs[kz]);
-            for (int b = cell_start[other]; b < cell_start[other + 1]; ++b) {
-              const Sphere& q = in_cell_order[static_cast<std::size_t>(b)];
+            const auto [first_in_cell, last_in_cell] = cells.run(CellGrid::key(nxs[kx], nys[ky], nzs[kz]));
+            for (std::size_t b = first_in_cell; b < last_in_cell; ++b) {
+              const Sphere& q = in_cell_order[b];
               if (q.id <= id_p) continue;  // each unordered pair once, from its smaller id
               const Eigen::Vector3d raw = q.centre - centre;
               const Eigen::Vector3d d(minimum_image(raw.x(), box.lx), minimum_image(raw.y(), box.ly), raw.z());
