@@ -21,6 +21,8 @@ struct CollidingRun {
   int threads = 1;
   bool skip_proven_separated = true;
   bool some_spheres = false;  // every third body a sphere inside its ellipsoid: all three pair paths
+  bool alternate_threads = false;  // 1 and `threads` threads in turn, a switch before every step
+  bool adaptive_threads = false;   // the engine's own choice between 1 and `threads`
 };
 
 struct CollidingResult {
@@ -47,12 +49,14 @@ CollidingResult run_colliding(const CollidingRun& run) {
   settings.dt = stable_time_step(particles, testing::kScaledDensity, settings.contact.material);
   settings.parallel_threshold = 0;
   settings.skip_proven_separated = run.skip_proven_separated;
+  settings.adaptive_threads = run.adaptive_threads;
   double top = 0.0;
   for (std::size_t slot = 0; slot < particles.size(); ++slot)
     top = std::max(top, particles.position[slot].z() + particles.bounding_radius[slot]);
   Simulation sim(settings, particles, {Wall{0.0, 0.0, 1, {}}, Wall{top, -0.5, -1, {}}});
   std::size_t contacts = 0;
   for (int step = 0; step < kThreadSteps; ++step) {
+    if (run.alternate_threads) omp_set_num_threads(step % 2 == 0 ? 1 : run.threads);
     sim.step();
     contacts += sim.contact_counts().particle_contacts;
   }
@@ -62,6 +66,18 @@ CollidingResult run_colliding(const CollidingRun& run) {
 }
 
 std::string run_with_threads(int threads) { return run_colliding({threads}).state; }
+
+// The engine may change the thread count between any two steps (settings.adaptive_threads):
+// a run whose count alternates 1, 2, 1, … every step ends in the same bits as one thread.
+TEST(EngineDeterminism, ThreadCountChangedEveryStepGivesTheSameState) {
+  CollidingRun alternating{2};
+  alternating.alternate_threads = true;
+  CollidingRun adaptive{2};
+  adaptive.adaptive_threads = true;
+  const std::string one = run_with_threads(1);
+  EXPECT_TRUE(run_colliding(alternating).state == one) << "switching the thread count changed the results";
+  EXPECT_TRUE(run_colliding(adaptive).state == one) << "the adaptive thread count changed the results";
+}
 
 TEST(EngineDeterminism, OneAndTwoThreadsGiveBitwiseEqualStates) {
   const std::string one = run_with_threads(1);

@@ -19,6 +19,7 @@ EngineSettings free_settings(NormalModel model) {
   settings.contact.wall_friction = 0.0;
   settings.box = {200.0, 200.0};
   settings.max_speed = 1e6;
+  settings.adaptive_threads = false;  // the tests set the thread count (omp_set_num_threads)
   return settings;
 }
 

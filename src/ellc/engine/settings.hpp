@@ -65,6 +65,10 @@ struct EngineSettings {
   // apart is below their clearance then). The skipped test would have found them apart too, so
   // the results are the same bit for bit; tests switch it off to check exactly that.
   bool skip_proven_separated = true;
+  // Each step runs on one thread or on omp_get_max_threads(), whichever the engine measures to be
+  // faster (thread_count.hpp): on a machine where other processes keep cores busy, one thread.
+  // false: always omp_get_max_threads(). The results are the same bit for bit either way.
+  bool adaptive_threads = true;
 };
 
 }  // namespace ellc::engine

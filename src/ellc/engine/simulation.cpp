@@ -1,6 +1,7 @@
 #include "ellc/engine/simulation.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <limits>
 
@@ -10,6 +11,8 @@
 #include "ellc/engine/invariants.hpp"
 #include "ellc/engine/rigid_body.hpp"
 #include "ellc/geometry/wall_contact.hpp"
+
+#include <omp.h>
 
 namespace ellc::engine {
 
@@ -54,6 +57,7 @@ EndedContact end_contact(ContactHistory& history, ContactCache& cache) noexcept 
 
 Simulation::Simulation(const EngineSettings& settings, ParticleSet particles, const std::array<Wall, 2>& walls)
     : settings_(settings), particles_(std::move(particles)), walls_(walls) {
+  choose_threads();
   const ContactSettings& contact = settings_.contact;
   pair_context_ = make_interaction(contact.model, contact.material, contact.material);
   ContactModel wall_model = contact.model;
@@ -120,7 +124,7 @@ void Simulation::set_wall_position(int wall, double position) { walls_[wall].pos
 
 void Simulation::rebuild_neighbours() {
   wrap_positions(particles_, settings_.box);
-  find_candidate_pairs(particles_, settings_.box, skin_, particles_.size() > settings_.parallel_threshold,
+  find_candidate_pairs(particles_, settings_.box, skin_, parallel(),
                        spare_pairs_);
   released_work_ += carry_over_history(pairs_, spare_pairs_);
   std::swap(pairs_, spare_pairs_);  // the old list's storage serves the next rebuild
@@ -135,7 +139,7 @@ void Simulation::rebuild_neighbours() {
 void Simulation::refresh_body_frames() noexcept {
   auto& p = particles_;
   const std::size_t count = p.size();
-#pragma omp parallel for schedule(static) if (count > settings_.parallel_threshold)
+#pragma omp parallel for schedule(static) num_threads(threads_) if (parallel())
   for (std::size_t slot = 0; slot < count; ++slot) refresh_body_frame(slot);
 }
 
@@ -145,7 +149,21 @@ void Simulation::refresh_body_frame(std::size_t slot) noexcept {
   if (is_sphere_[slot] == 0) shapes_[slot] = Ellipsoid(p.semi_axes[slot], Pose{p.position[slot], p.orientation[slot]});
 }
 
+// The threads of the next step: all of omp_get_max_threads(), or the adaptive choice between one
+// and all (thread_count.hpp) fed with the previous step's wall time.
+void Simulation::choose_threads() noexcept {
+  const int most = omp_get_max_threads();
+  if (!settings_.adaptive_threads) {
+    threads_ = most;
+    return;
+  }
+  if (most != thread_choice_.most()) thread_choice_.reset(most);
+  threads_ = thread_choice_.current();
+}
+
 void Simulation::step() {
+  choose_threads();
+  const auto start = std::chrono::steady_clock::now();
   const double half_dt = 0.5 * settings_.dt;
   const bool stale = kick_and_drift(half_dt);
   for (auto& wall : walls_) wall.position += settings_.dt * wall.velocity;
@@ -162,6 +180,8 @@ void Simulation::step() {
   for (int w = 0; w < 2; ++w)
     walls_[w].work -= 0.5 * (force_before[w] + walls_[w].force.z()) * walls_[w].velocity * settings_.dt;
   const std::size_t runaway = kick_and_check(half_dt);
+  if (settings_.adaptive_threads && !stale && particles_.size() > settings_.parallel_threshold)
+    thread_choice_.record(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
   if (runaway < particles_.size()) report_runaway(runaway);
 }
 
@@ -175,7 +195,7 @@ bool Simulation::kick_and_drift(double half_dt) noexcept {
   const double limit_sq = 0.25 * skin_ * skin_;
   auto& p = particles_;
   bool stale = false;
-#pragma omp parallel for schedule(static) reduction(|| : stale) if (count > settings_.parallel_threshold)
+#pragma omp parallel for schedule(static) reduction(|| : stale) num_threads(threads_) if (parallel())
   for (std::size_t slot = 0; slot < count; ++slot) {
     kick_particle(slot, half_dt, gravity, drag);
     const Eigen::Vector3d before = p.position[slot];
@@ -207,7 +227,7 @@ std::size_t Simulation::kick_and_check(double half_dt) noexcept {
   const double limit = settings_.max_speed;
   const auto& p = particles_;
   std::size_t first_bad = count;
-#pragma omp parallel for schedule(static) reduction(min : first_bad) if (count > settings_.parallel_threshold)
+#pragma omp parallel for schedule(static) reduction(min : first_bad) num_threads(threads_) if (parallel())
   for (std::size_t slot = 0; slot < count; ++slot) {
     kick_particle(slot, half_dt, gravity, drag);
     const double speed = p.velocity[slot].norm();
@@ -224,7 +244,7 @@ std::size_t Simulation::kick_and_check(double half_dt) noexcept {
 void Simulation::compute_forces() {
   const std::size_t count = particles_.size();
   const std::size_t pair_count = pairs_.size();
-#pragma omp parallel if (count > settings_.parallel_threshold)
+#pragma omp parallel num_threads(threads_) if (parallel())
   {
 #pragma omp for schedule(static) nowait
     for (std::size_t slot = 0; slot < count; ++slot) evaluate_walls_and_reset(slot);
@@ -366,8 +386,8 @@ void Simulation::accumulate() {
       failures_ += results[slot].failed ? 1U : 0U;
     }
   }
-  const bool parallel = count > settings_.parallel_threshold;
-#pragma omp parallel for schedule(static) if (parallel)
+  const bool in_parallel = parallel();
+#pragma omp parallel for schedule(static) num_threads(threads_) if (in_parallel)
   for (std::size_t slot = 0; slot < count; ++slot) {
     Eigen::Vector3d force = p.force[slot];
     Eigen::Vector3d torque = p.torque[slot];
@@ -391,7 +411,7 @@ void Simulation::accumulate() {
   const std::size_t chunks = (pairs_.size() + kChunk - 1) / kChunk;
   chunk_sums_.assign(chunks, ChunkSums{});
   std::uint64_t failures = 0;
-#pragma omp parallel for schedule(static) reduction(+ : failures) if (parallel)
+#pragma omp parallel for schedule(static) reduction(+ : failures) num_threads(threads_) if (in_parallel)
   for (std::size_t chunk = 0; chunk < chunks; ++chunk) {
     ChunkSums sums;
     for (std::size_t index = chunk * kChunk; index < std::min(pairs_.size(), (chunk + 1) * kChunk); ++index) {

@@ -22,6 +22,7 @@
 #include "ellc/engine/pair_map.hpp"
 #include "ellc/engine/particles.hpp"
 #include "ellc/engine/settings.hpp"
+#include "ellc/engine/thread_count.hpp"
 #include "ellc/geometry/ellipsoid.hpp"
 
 namespace ellc::engine {
@@ -114,6 +115,8 @@ class Simulation {
   [[nodiscard]] double time() const noexcept { return time_; }
   [[nodiscard]] const std::vector<PairSlot>& pairs() const noexcept { return pairs_; }
   [[nodiscard]] std::uint64_t neighbour_rebuilds() const noexcept { return rebuilds_; }
+  // Threads the next step runs on (settings().adaptive_threads; a diagnostic).
+  [[nodiscard]] int thread_count() const noexcept { return threads_; }
   // Candidate pairs currently proven apart, whose test the next step skips (a diagnostic).
   [[nodiscard]] std::size_t pairs_proven_apart() const noexcept;
 
@@ -195,6 +198,8 @@ class Simulation {
   void evaluate_walls_and_reset(std::size_t slot);
   void accumulate();
   [[noreturn]] void report_runaway(std::size_t first_bad) const;
+  void choose_threads() noexcept;
+  [[nodiscard]] bool parallel() const noexcept { return threads_ > 1 && particles_.size() > settings_.parallel_threshold; }
 
   EngineSettings settings_;
   ParticleSet particles_;
@@ -238,6 +243,8 @@ class Simulation {
   std::uint64_t step_ = 0;
   std::uint64_t rebuilds_ = 0;
   double time_ = 0.0;
+  AdaptiveThreadCount thread_choice_;  // not state: only the speed depends on it
+  int threads_ = 1;                    // of the current step's parallel loops
 };
 
 }  // namespace ellc::engine

@@ -1,0 +1,100 @@
+#pragma once
+// How many threads the next step uses: an adaptive choice between one thread and all of them.
+//
+// Fork/join with a barrier per loop is fast on idle cores and very slow when another process
+// keeps a core busy: every barrier then waits for a descheduled thread (issue 16 measured two
+// threads 5× slower than one with one core busy). The step's results do not depend on the thread
+// count (bit for bit, tested), so the engine may change it between any two steps. This class
+// times the steps and keeps the faster count: it runs the chosen count, and now and then probes
+// the other one for a few steps. A probe that loses doubles the interval to the next one (up to
+// kLongestInterval), so a loaded machine pays at most a few per cent for the probing; a probe that
+// wins, or a chosen count that slows down by half, starts a new round at the short interval.
+//
+// Pure bookkeeping of times, no clock and no OpenMP: the caller measures and asks.
+
+#include <algorithm>
+#include <limits>
+
+namespace ellc::engine {
+
+class AdaptiveThreadCount {
+ public:
+  static constexpr int kWindow = 16;             // steps averaged for the chosen count
+  static constexpr int kProbeSteps = 4;          // steps of a probe (the first one is not counted)
+  static constexpr int kShortestInterval = 64;   // steps between probes after a change
+  static constexpr int kLongestInterval = 1024;  // ... after probes that kept losing
+
+  explicit AdaptiveThreadCount(int most_threads = 1) noexcept { reset(most_threads); }
+
+  void reset(int most_threads) noexcept {
+    most_ = std::max(1, most_threads);
+    current_ = most_;
+    probing_ = false;
+    sum_ = 0.0;
+    steps_ = 0;
+    settled_mean_ = std::numeric_limits<double>::infinity();
+    interval_ = kShortestInterval;
+    steps_to_probe_ = kWindow;  // the first probe right after the first full window
+  }
+
+  [[nodiscard]] int most() const noexcept { return most_; }
+  // The thread count for the next step.
+  [[nodiscard]] int current() const noexcept { return current_; }
+
+  // The wall time of one step run with current() threads (steps that rebuilt the neighbour list
+  // are better left out: they cost several ordinary steps).
+  void record(double seconds) noexcept {
+    if (most_ == 1) return;
+    if (probing_) {
+      if (++steps_ > 1) sum_ += seconds;  // the first step wakes the pool or lets it fall asleep
+      if (steps_ < kProbeSteps) return;
+      const double probe_mean = sum_ / (kProbeSteps - 1);
+      probing_ = false;
+      if (probe_mean < 0.97 * settled_mean_) {  // the other count is faster: keep it
+        settled_mean_ = probe_mean;
+        interval_ = kShortestInterval;
+      } else {
+        current_ = other();
+        interval_ = std::min(2 * interval_, kLongestInterval);
+      }
+      start_window(interval_);
+      return;
+    }
+    sum_ += seconds;
+    if (++steps_ == kWindow) {
+      const double mean = sum_ / kWindow;
+      if (mean > 1.5 * settled_mean_) {  // the load changed: look again now
+        steps_to_probe_ = 0;
+        interval_ = kShortestInterval;
+      }
+      settled_mean_ = mean;
+      sum_ = 0.0;
+      steps_ = 0;
+    }
+    if (--steps_to_probe_ <= 0 && settled_mean_ < std::numeric_limits<double>::infinity()) {
+      probing_ = true;
+      current_ = other();
+      sum_ = 0.0;
+      steps_ = 0;
+    }
+  }
+
+ private:
+  [[nodiscard]] int other() const noexcept { return current_ == 1 ? most_ : 1; }
+  void start_window(int steps_to_probe) noexcept {
+    sum_ = 0.0;
+    steps_ = 0;
+    steps_to_probe_ = steps_to_probe;
+  }
+
+  int most_ = 1;
+  int current_ = 1;
+  bool probing_ = false;
+  double sum_ = 0.0;  // over the current window or probe
+  int steps_ = 0;
+  double settled_mean_ = 0.0;  // mean step time of current() over its last full window
+  int interval_ = kShortestInterval;
+  int steps_to_probe_ = kWindow;
+};
+
+}  // namespace ellc::engine

@@ -1,0 +1,60 @@
+// The adaptive thread count (engine/thread_count.hpp) fed with synthetic step times: it settles
+// on the faster count, follows a change of load, and spends little time probing the slower one.
+
+#include <gtest/gtest.h>
+
+#include "ellc/engine/thread_count.hpp"
+
+namespace ellc::engine {
+namespace {
+
+// Runs `steps` steps whose time is `seconds(threads)`; returns the steps spent on each count.
+template <typename Time>
+std::pair<int, int> run(AdaptiveThreadCount& choice, int steps, Time seconds) {
+  int on_one = 0, on_most = 0;
+  for (int step = 0; step < steps; ++step) {
+    const int threads = choice.current();
+    (threads == 1 ? on_one : on_most) += 1;
+    choice.record(seconds(threads));
+  }
+  return {on_one, on_most};
+}
+
+TEST(EngineThreadCount, KeepsAllThreadsWhenTheyAreFaster) {
+  AdaptiveThreadCount choice(2);
+  EXPECT_EQ(choice.current(), 2);
+  const auto [on_one, on_two] = run(choice, 5000, [](int threads) { return threads == 2 ? 1.0 : 1.8; });
+  EXPECT_EQ(choice.current(), 2);
+  EXPECT_LT(on_one, 5000 / 50) << "probing one thread cost more than 2 % of the steps";
+  EXPECT_GT(on_two, 0);
+}
+
+// A busy core: two threads 5× slower than one (issue 16's measurement).
+TEST(EngineThreadCount, FallsBackToOneThreadWhenACoreIsBusy) {
+  AdaptiveThreadCount choice(2);
+  const auto [on_one, on_two] = run(choice, 5000, [](int threads) { return threads == 2 ? 5.0 : 1.0; });
+  EXPECT_EQ(choice.current(), 1);
+  // Total time against always one thread: the probes of two threads add at most a few per cent.
+  const double total = on_one * 1.0 + on_two * 5.0;
+  EXPECT_LT(total, 1.10 * 5000.0);
+}
+
+TEST(EngineThreadCount, FollowsTheLoadBothWays) {
+  AdaptiveThreadCount choice(2);
+  run(choice, 2000, [](int threads) { return threads == 2 ? 1.0 : 1.9; });  // quiet
+  EXPECT_EQ(choice.current(), 2);
+  run(choice, 3000, [](int threads) { return threads == 2 ? 10.0 : 2.0; });  // another process arrives
+  EXPECT_EQ(choice.current(), 1);
+  run(choice, 3000, [](int threads) { return threads == 2 ? 1.0 : 1.9; });  // and leaves
+  EXPECT_EQ(choice.current(), 2);
+}
+
+TEST(EngineThreadCount, OneThreadAvailableNeverProbes) {
+  AdaptiveThreadCount choice(1);
+  const auto [on_one, on_most] = run(choice, 1000, [](int) { return 1.0; });
+  EXPECT_EQ(on_one + on_most, 1000);
+  EXPECT_EQ(choice.current(), 1);
+}
+
+}  // namespace
+}  // namespace ellc::engine
