@@ -20,7 +20,7 @@ constexpr int kThreadSteps = 400;
 struct CollidingRun {
   int threads = 1;
   bool skip_proven_separated = true;
-  bool some_spheres = false;  // every third body a sphere inside its ellipsoid: all three pair paths
+  bool some_spheres = false;       // every third body a sphere inside its ellipsoid: all three pair paths
   bool alternate_threads = false;  // 1 and `threads` threads in turn, a switch before every step
   bool adaptive_threads = false;   // the engine's own choice between 1 and `threads`
 };

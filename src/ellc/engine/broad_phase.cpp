@@ -6,8 +6,8 @@
 
 #include <algorithm>
 #include <array>
-#include <cstdint>
 #include <cmath>
+#include <cstdint>
 #include <numeric>
 #include <utility>
 
@@ -40,7 +40,8 @@ struct CellGrid {
     return cell >= static_cast<double>(n - 1) ? n - 1 : static_cast<std::int64_t>(cell);
   }
   [[nodiscard]] std::array<std::int64_t, 3> cell_of(const Eigen::Vector3d& x) const noexcept {
-    return {clamp_cell(x.x(), 0.0, cell_x, nx), clamp_cell(x.y(), 0.0, cell_y, ny), clamp_cell(x.z(), z_min, cell_z, nz)};
+    return {clamp_cell(x.x(), 0.0, cell_x, nx), clamp_cell(x.y(), 0.0, cell_y, ny),
+            clamp_cell(x.z(), z_min, cell_z, nz)};
   }
 };
 
@@ -81,7 +82,8 @@ class OccupiedCells {
   OccupiedCells(const std::vector<std::uint64_t>& key_of_slot, std::vector<std::uint32_t>& sorted) {
     const std::size_t count = key_of_slot.size();
     std::vector<std::pair<std::uint64_t, std::uint32_t>> by_cell(count);
-    for (std::size_t slot = 0; slot < count; ++slot) by_cell[slot] = {key_of_slot[slot], static_cast<std::uint32_t>(slot)};
+    for (std::size_t slot = 0; slot < count; ++slot)
+      by_cell[slot] = {key_of_slot[slot], static_cast<std::uint32_t>(slot)};
     std::sort(by_cell.begin(), by_cell.end());
     sorted.resize(count);
     for (std::size_t k = 0; k < count; ++k) {

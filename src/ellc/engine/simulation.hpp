@@ -199,7 +199,9 @@ class Simulation {
   void accumulate();
   [[noreturn]] void report_runaway(std::size_t first_bad) const;
   void choose_threads() noexcept;
-  [[nodiscard]] bool parallel() const noexcept { return threads_ > 1 && particles_.size() > settings_.parallel_threshold; }
+  [[nodiscard]] bool parallel() const noexcept {
+    return threads_ > 1 && particles_.size() > settings_.parallel_threshold;
+  }
 
   EngineSettings settings_;
   ParticleSet particles_;

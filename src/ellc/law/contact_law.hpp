@@ -134,7 +134,9 @@ struct LoadingPoint {
     return {point.force, overlap, point.regime, {c.hertz_coefficient, overlap, 1.0}};
   }
   if (max_overlap <= c.yield_overlap)  // never yielded: Hertz both ways, δ_p = 0
-    return {c.hertz_coefficient * law_detail::pow_three_halves(overlap), max_overlap, Regime::elastic,
+    return {c.hertz_coefficient * law_detail::pow_three_halves(overlap),
+            max_overlap,
+            Regime::elastic,
             {c.hertz_coefficient, overlap, 1.0}};
   const UnloadingBranch branch = unloading_branch(c, max_overlap);
   const double elastic_overlap = overlap - branch.plastic_overlap;  // δ_UL, eq. (32)
