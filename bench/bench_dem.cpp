@@ -7,12 +7,20 @@
 // with several contacts per particle. The sphere run starts from the same positions (spheres of
 // the same volume) after 100 untimed steps. ELLC_BENCH_DEM_PARTICLES overrides N = 10^4,
 // ELLC_BENCH_DEM_STEPS the 300 timed steps (with fewer, the figure depends more on how many
-// neighbour-list rebuilds, about one per 20 steps, fall into the window).
+// neighbour-list rebuilds, about one per 20 steps, fall into the window),
+// ELLC_BENCH_DEM_FIXED_THREADS=1 switches the adaptive thread count off. Counters: particle-steps/s,
+// the threads the engine ran on at the end, and memory per particle (the simulation's resident
+// growth, and the process's peak). bench/compare_dem.py runs it against a baseline build with a
+// busy companion process; bench/scaling.py over N.
 
 #include <benchmark/benchmark.h>
 
+#include <sys/resource.h>
+#include <unistd.h>
+
 #include <chrono>
 #include <cstdlib>
+#include <fstream>
 #include <memory>
 
 #include "ellc/engine/simulation.hpp"
@@ -78,6 +86,9 @@ EngineSettings bench_settings(bool spheres, const ParticleSet& particles, const 
   settings.dt = stable_time_step(particles, kDensity, settings.contact.material);
   settings.drag_rate = 0.5;
   settings.max_speed = 1e6;
+  // ELLC_BENCH_DEM_FIXED_THREADS=1: always OMP_NUM_THREADS threads (the engine's adaptive choice
+  // between one thread and all of them is on otherwise).
+  settings.adaptive_threads = std::getenv("ELLC_BENCH_DEM_FIXED_THREADS") == nullptr;
   return settings;
 }
 
@@ -115,26 +126,59 @@ std::unique_ptr<Simulation> dense(bool spheres) {
   return sim;
 }
 
+// Resident memory of the process now, bytes (Linux /proc/self/statm; 0 elsewhere).
+double resident_bytes() {
+  std::ifstream statm("/proc/self/statm");
+  double pages = 0.0, resident = 0.0;
+  statm >> pages >> resident;
+  return resident * static_cast<double>(sysconf(_SC_PAGESIZE));
+}
+
+// CPU time of the whole process (all threads), seconds.
+double process_cpu_seconds() {
+  rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);
+  const auto seconds = [](const timeval& t) {
+    return static_cast<double>(t.tv_sec) + 1e-6 * static_cast<double>(t.tv_usec);
+  };
+  return seconds(usage.ru_utime) + seconds(usage.ru_stime);
+}
+
 double ellipsoid_rate = 0.0;
 double sphere_rate = 0.0;
 
 void run(benchmark::State& state, bool spheres, double& rate) {
+  dense_ellipsoids();  // the shared setup, not counted in the memory of this run
+  const double resident_before = resident_bytes();
   auto simulation = dense(spheres);
   const auto count = static_cast<double>(simulation->particles().size());
   std::int64_t steps = 0;
+  const double cpu_start = process_cpu_seconds();
   const auto start = std::chrono::steady_clock::now();
   for (auto _ : state) {
     simulation->step();
     ++steps;
   }
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const double cpu_seconds = process_cpu_seconds() - cpu_start;
   rate = count * static_cast<double>(steps) / seconds;
+  // CPU time per particle-step, all threads: on a loaded machine a steadier measure of the work
+  // than wall time (it does not count the time the process waited for a core).
+  state.counters["cpu_ns_per_particle_step"] = 1e9 * cpu_seconds / (count * static_cast<double>(steps));
   const ContactCounts counts = simulation->contact_counts();
   state.counters["particle_steps_per_s"] = rate;
   state.counters["particles"] = count;
   state.counters["contacts_per_particle"] = 2.0 * static_cast<double>(counts.particle_contacts) / count;
   state.counters["candidate_pairs_per_particle"] = static_cast<double>(simulation->pairs().size()) / count;
   state.counters["narrow_phase_failures"] = static_cast<double>(counts.narrow_phase_failures);
+  state.counters["threads_at_end"] = simulation->thread_count();  // the engine's adaptive choice
+  // What this run's simulation holds (resident growth since before it was made), and the peak
+  // resident memory of the whole process (the packing's setup included), bytes per particle.
+  state.counters["simulation_bytes_per_particle"] = (resident_bytes() - resident_before) / count;
+  // Peak resident memory of the whole process (packing setup included) per particle, bytes.
+  rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);
+  state.counters["peak_rss_bytes_per_particle"] = 1024.0 * static_cast<double>(usage.ru_maxrss) / count;
 }
 
 void BM_dem_ellipsoids_becker_kamlah(benchmark::State& state) { run(state, false, ellipsoid_rate); }

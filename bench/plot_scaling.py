@@ -1,0 +1,45 @@
+#!/usr/bin/python3
+"""The README's performance plot from bench/scaling.py's JSON: particle-steps/s against N (one and
+two threads, ellipsoids and spheres), and two threads over one thread against N.
+
+  /usr/bin/python3 bench/plot_scaling.py bench/results/scaling.json docs/img/performance_scaling.png
+"""
+import json
+import sys
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+
+
+def main():
+    rows = json.load(open(sys.argv[1]))
+    title = sys.argv[3] if len(sys.argv) > 3 else ""
+    fig, (rate_ax, scale_ax) = plt.subplots(1, 2, figsize=(10, 4))
+    labels = {"BM_dem_ellipsoids_becker_kamlah": "ellipsoids (Becker–Kamlah)", "BM_dem_spheres_hertz": "spheres (Hertz)"}
+    for bench, label in labels.items():
+        for threads, style in ((1, "o-"), (2, "s--")):
+            points = sorted((r["particles"], r["particle_steps_per_s"]) for r in rows
+                            if r["benchmark"] == bench and r["threads"] == threads)
+            if points:
+                rate_ax.plot(*zip(*points), style, label=f"{label}, {threads} thread{'s' if threads > 1 else ''}")
+        one = {r["particles"]: r["particle_steps_per_s"] for r in rows if r["benchmark"] == bench and r["threads"] == 1}
+        two = {r["particles"]: r["particle_steps_per_s"] for r in rows if r["benchmark"] == bench and r["threads"] == 2}
+        common = sorted(set(one) & set(two))
+        if common:
+            scale_ax.plot(common, [two[n] / one[n] for n in common], "o-", label=label)
+    rate_ax.set(xscale="log", yscale="log", xlabel="particles N", ylabel="particle-steps / s",
+                title="bench_dem throughput")
+    rate_ax.legend(fontsize=7)
+    scale_ax.axhline(1.0, color="grey", lw=0.8)
+    scale_ax.set(xscale="log", xlabel="particles N", ylabel="2 threads / 1 thread", title="thread scaling")
+    scale_ax.legend(fontsize=7)
+    if title:
+        fig.suptitle(title, fontsize=9)
+    fig.tight_layout()
+    fig.savefig(sys.argv[2], dpi=110)
+
+
+if __name__ == "__main__":
+    main()
