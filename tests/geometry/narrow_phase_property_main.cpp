@@ -1,6 +1,6 @@
 // narrow_phase_property [--pairs N] [--seed S]: the narrow phase's property test over the
 // documented shape range (tests/geometry/narrow_phase_property.hpp, docs/geometry.md §6).
-// The documented run (not a CI step; about 1–2 min of one core):
+// The documented run (not a CI step; a few seconds of CPU):
 //   nice -n 10 build/tests/geometry/narrow_phase_property --pairs 1000000
 // Exit code 0 when no pair that must be solved (separated, grazing, overlap ≤ 10 % of the
 // smallest semi-axis) failed, was non-finite, unverified or swap-asymmetric; 1 otherwise.
