@@ -64,12 +64,12 @@ std::vector<CsvRow> csv_rows(const std::vector<double>& path, const ContactConst
     const LawResult& result = results[index];
     const double previous_max = index == 0 ? 0.0 : results[index - 1].max_overlap;
     const ContactPatch patch = contact_patch(constants, path[index], previous_max);
-    rows[index] = {{path[index], result.force, result.max_overlap, plastic_overlap(constants, result.max_overlap),
-                    patch.semi_axis_major, patch.semi_axis_minor,
-                    patch.semi_axis_major > 0.0 ? patch.peak_pressure() : 0.0, path[index] / constants.yield_overlap,
-                    result.force / constants.yield_force, spheres[index].force / constants.yield_force,
-                    elastic_fully_plastic[index].force / constants.yield_force},
-                   regime_name(result.regime)};
+    rows[index] = {
+        {path[index], result.force, result.max_overlap, plastic_overlap(constants, result.max_overlap),
+         patch.semi_axis_major, patch.semi_axis_minor, patch.semi_axis_major > 0.0 ? patch.peak_pressure() : 0.0,
+         path[index] / constants.yield_overlap, result.force / constants.yield_force,
+         spheres[index].force / constants.yield_force, elastic_fully_plastic[index].force / constants.yield_force},
+        regime_name(result.regime)};
   }
   return rows;
 }
@@ -77,10 +77,17 @@ std::vector<CsvRow> csv_rows(const std::vector<double>& path, const ContactConst
 // A result that overflows is traced back to the inputs it comes from (the law's scale is set by
 // E_e, Y and the curvatures; the protocol sets δ): never a NaN or inf in the output.
 void check_finite(const std::vector<CsvRow>& rows, const TwoBodyFields& fields) {
-  static constexpr std::array<const char*, kColumns> names{
-      "overlap", "force", "max_overlap", "plastic_overlap", "contact_semi_axis_major", "contact_semi_axis_minor",
-      "peak_pressure", "overlap_over_yield", "force_over_yield", "force_equal_volume_spheres_over_yield",
-      "force_elastic_fully_plastic_over_yield"};
+  static constexpr std::array<const char*, kColumns> names{"overlap",
+                                                           "force",
+                                                           "max_overlap",
+                                                           "plastic_overlap",
+                                                           "contact_semi_axis_major",
+                                                           "contact_semi_axis_minor",
+                                                           "peak_pressure",
+                                                           "overlap_over_yield",
+                                                           "force_over_yield",
+                                                           "force_equal_volume_spheres_over_yield",
+                                                           "force_elastic_fully_plastic_over_yield"};
   for (const CsvRow& row : rows)
     for (std::size_t column = 0; column < kColumns; ++column)
       if (!std::isfinite(row.values[column]))

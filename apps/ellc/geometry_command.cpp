@@ -136,13 +136,13 @@ void run_geometry(const GeometryOptions& options) {
       normal_contact(g, material, mean_radius_sum, poses.model.hertz, poses.model.law, poses.max_overlap);
   if (const std::string error = traced_constants_error(contact.constants, fields); !error.empty())
     throw InputError(options.poses_path, "the contact constants of this configuration: " + error);
-  if (!std::isfinite(contact.law.force) || !std::isfinite(contact.law.max_overlap) ||
-      !contact.force_on_j.allFinite() || !contact.application_point.allFinite())
-    throw InputError(options.poses_path, "the inputs " + fields.material + " with " + fields.shape +
-                                             ", max_overlap = " + format_number(poses.max_overlap) +
-                                             " overflow the number format (force = " +
-                                             format_number(contact.law.force) +
-                                             " µN): expected a material and bodies whose force is finite");
+  if (!std::isfinite(contact.law.force) || !std::isfinite(contact.law.max_overlap) || !contact.force_on_j.allFinite() ||
+      !contact.application_point.allFinite())
+    throw InputError(options.poses_path,
+                     "the inputs " + fields.material + " with " + fields.shape +
+                         ", max_overlap = " + format_number(poses.max_overlap) +
+                         " overflow the number format (force = " + format_number(contact.law.force) +
+                         " µN): expected a material and bodies whose force is finite");
   print_curvature("I", g.curvature_i);
   print_curvature(poses.body_j ? "J" : "wall", g.curvature_j);
   std::printf("  alpha                  %.10g deg\n", g.alpha / kDegree);

@@ -90,9 +90,8 @@ TEST(CaseFile, TooManyPointsAreRejectedBeforeAllocating) {
 // δ_Y ~ (Y/E)² R_e underflows to 0 for Y/E = 1e-600: the message names the material fields
 // before the derived quantity.
 TEST(CaseFile, AnInvalidDerivedConstantNamesTheInputFields) {
-  const std::string message = rejection(replaced(
-      replaced(kCase, "youngs_modulus = 142000.0", "youngs_modulus = 1e300"), "yield_stress = 7900.0",
-      "yield_stress = 1e-300"));
+  const std::string message = rejection(replaced(replaced(kCase, "youngs_modulus = 142000.0", "youngs_modulus = 1e300"),
+                                                 "yield_stress = 7900.0", "yield_stress = 1e-300"));
   const auto material = message.find("[material] youngs_modulus = 1");
   const auto derived = message.find("delta_Y");
   EXPECT_NE(material, std::string::npos) << message;

@@ -149,8 +149,8 @@ TEST(PosesFile, RejectsValuesBeyondTheNumberFormatByName) {
   const std::string message = rejection("max_overlap = 1e308\n" + kPair);
   EXPECT_NE(message.find("max_overlap = "), std::string::npos) << message;
   EXPECT_NE(message.find("at most 11 µm"), std::string::npos) << message;  // a_max^I + a_max^J = 5 + 6
-  const std::string on_wall =
-      rejection("max_overlap = 10.5\n" + replaced(kPair, kBodyJ, "[wall]\npoint = [0.0, 0.0, 0.0]\nnormal = [0.0, 0.0, 1.0]\n"));
+  const std::string on_wall = rejection(
+      "max_overlap = 10.5\n" + replaced(kPair, kBodyJ, "[wall]\npoint = [0.0, 0.0, 0.0]\nnormal = [0.0, 0.0, 1.0]\n"));
   EXPECT_NE(on_wall.find("at most 10 µm"), std::string::npos) << on_wall;  // 2 a_max^I
   EXPECT_NO_THROW((void)ellc::parse_poses("max_overlap = 11.0\n" + kPair, "poses.toml"));
 }

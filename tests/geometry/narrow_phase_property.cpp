@@ -19,7 +19,8 @@ enum class BodyShape : std::uint8_t { ordinary, flat, slender, triaxial };
 double log_uniform(Rng& rng, double low, double high) { return std::exp(uniform(rng, std::log(low), std::log(high))); }
 
 // Semi-axes with mean radius r̂ = (abc)^{1/3}; flat: a ≥ b ≥ a/2, c = a/k; slender: a = k c,
-// c ≤ b ≤ 2c (half of each exactly a = b, b = c); triaxial: a, b log-uniform in [c, a], c = a/k. Largest/smallest = k (ordinary: ≤ 10).
+// c ≤ b ≤ 2c (half of each exactly a = b, b = c); triaxial: a, b log-uniform in [c, a], c = a/k. Largest/smallest = k
+// (ordinary: ≤ 10).
 Eigen::Vector3d body_semi_axes(Rng& rng, BodyShape shape, double aspect, double mean_radius) {
   Eigen::Vector3d ratios;
   switch (shape) {
@@ -40,8 +41,8 @@ Eigen::Vector3d body_semi_axes(Rng& rng, BodyShape shape, double aspect, double 
 Eigen::Quaterniond face_towards(Rng& rng, const Eigen::Vector3d& semi_axes, const Eigen::Vector3d& direction) {
   Eigen::Index thinnest = 0;
   semi_axes.minCoeff(&thinnest);
-  const Eigen::Quaterniond twist(Eigen::AngleAxisd(uniform(rng, 0.0, 2.0 * std::numbers::pi),
-                                                   Eigen::Vector3d::Unit(static_cast<int>(thinnest))));
+  const Eigen::Quaterniond twist(
+      Eigen::AngleAxisd(uniform(rng, 0.0, 2.0 * std::numbers::pi), Eigen::Vector3d::Unit(static_cast<int>(thinnest))));
   const Eigen::Quaterniond tilt(Eigen::AngleAxisd(uniform(rng, 0.0, 2.0) * std::numbers::pi / 180.0, random_unit(rng)));
   return tilt * align_axis(static_cast<int>(thinnest), direction) * twist;
 }
@@ -68,8 +69,10 @@ Sample make_sample(Rng& rng, long index) {
       shape_j = static_cast<BodyShape>(1 + static_cast<int>(uniform(rng, 0.0, 3.0)) % 3);
       break;
   }
-  const Eigen::Vector3d axes_i = body_semi_axes(rng, shape_i, log_uniform(rng, 1.0, 100.0), log_uniform(rng, 0.1, 10.0));
-  const Eigen::Vector3d axes_j = body_semi_axes(rng, shape_j, log_uniform(rng, 1.0, 100.0), log_uniform(rng, 0.1, 10.0));
+  const Eigen::Vector3d axes_i =
+      body_semi_axes(rng, shape_i, log_uniform(rng, 1.0, 100.0), log_uniform(rng, 0.1, 10.0));
+  const Eigen::Vector3d axes_j =
+      body_semi_axes(rng, shape_j, log_uniform(rng, 1.0, 100.0), log_uniform(rng, 0.1, 10.0));
   const double aspect = std::max(axes_i.maxCoeff() / axes_i.minCoeff(), axes_j.maxCoeff() / axes_j.minCoeff());
   const int aspect_bin = static_cast<int>(std::upper_bound(kAspectBinUpper.begin(), kAspectBinUpper.end(), aspect) -
                                           kAspectBinUpper.begin());
@@ -191,21 +194,21 @@ std::string PropertyReport::text() const {
   std::string out;
   char line[512];
   const PropertyCell all = total();
-  std::snprintf(line, sizeof line,
-                "narrow_phase_property: %ld pairs in %.1f s: %ld contact, %ld separated, %ld failed, %ld non-finite, "
-                "%ld unverified, %ld swap mismatches; mean Newton steps %.2f\n",
-                pairs, seconds, all.contact, all.separated, all.failed, all.non_finite, all.unverified,
-                all.swap_mismatch,
-                all.pairs > 0 ? static_cast<double>(all.newton_steps) / static_cast<double>(all.pairs) : 0.0,
-                all.other_minimum);
+  std::snprintf(
+      line, sizeof line,
+      "narrow_phase_property: %ld pairs in %.1f s: %ld contact, %ld separated, %ld failed, %ld non-finite, "
+      "%ld unverified, %ld swap mismatches; mean Newton steps %.2f\n",
+      pairs, seconds, all.contact, all.separated, all.failed, all.non_finite, all.unverified, all.swap_mismatch,
+      all.pairs > 0 ? static_cast<double>(all.newton_steps) / static_cast<double>(all.pairs) : 0.0, all.other_minimum);
   out += line;
   std::snprintf(line, sizeof line,
                 "swap symmetry: max |delta(I,J) - delta(J,I)| = %.2e of (a_max^I + a_max^J), max |n(I,J) + n(J,I)| = "
                 "%.2e\n",
                 max_swap_overlap_difference, max_swap_normal_difference);
   out += line;
-  out += "failed (non-finite / unverified / swap mismatch when not 0) of pairs, by shape, largest aspect ratio and "
-         "overlap depth / smallest semi-axis:\n";
+  out +=
+      "failed (non-finite / unverified / swap mismatch when not 0) of pairs, by shape, largest aspect ratio and "
+      "overlap depth / smallest semi-axis:\n";
   std::snprintf(line, sizeof line, "%-9s %-7s", "shape", "aspect");
   out += line;
   for (const char* name : kDepthBinNames) {
@@ -267,8 +270,10 @@ PropertyReport run_narrow_phase_property(long pairs, std::uint64_t seed) {
     const bool verified = forward.status == NarrowPhaseStatus::contact
                               ? verified_contact(s.i, s.j, forward) && verified_contact(s.j, s.i, swapped)
                               : verified_separation(s.i, s.j, forward) && verified_separation(s.j, s.i, swapped);
-    if (forward.status == NarrowPhaseStatus::contact) ++cell.contact;
-    else ++cell.separated;
+    if (forward.status == NarrowPhaseStatus::contact)
+      ++cell.contact;
+    else
+      ++cell.separated;
     const double reach = s.i.bounding_radius() + s.j.bounding_radius();
     if (forward.status != swapped.status) {
       // Only at touching may rounding put one order on either side of δ = 0.

@@ -41,7 +41,8 @@ TEST(NarrowPhaseProperty, ShallowContactsOfHundredToOneDiscsAndNeedlesConverge) 
       const Eigen::Vector3d axes_j = shape * test::uniform(rng, 0.5, 2.0);
       const double overlap = test::uniform(rng, 0.01, 0.1) * std::min(axes_i.minCoeff(), axes_j.minCoeff());
       const Ellipsoid i(axes_i, {Eigen::Vector3d::Zero(), test::random_orientation(rng)});
-      const Ellipsoid j = test::place_partner(i, axes_j, test::random_orientation(rng), test::random_unit(rng), overlap);
+      const Ellipsoid j =
+          test::place_partner(i, axes_j, test::random_orientation(rng), test::random_unit(rng), overlap);
       const NarrowPhaseResult result = ellipsoid_contact(i, j);
       ++pairs;
       if (result.status == NarrowPhaseStatus::failed) ++failed;

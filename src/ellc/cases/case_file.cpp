@@ -28,7 +28,8 @@ BodySpec read_body(TableReader& table, const std::optional<Material>& default_ma
   if (semi_axes && (aspect || mean))
     throw InputError(table.source(),
                      "[" + table.path() + "] gives both semi_axes and aspect/mean_radius: expected one of the two");
-  const std::string length_range = "a length in [" + format_number(kMinLength) + ", " + format_number(kMaxLength) + "] (µm)";
+  const std::string length_range =
+      "a length in [" + format_number(kMinLength) + ", " + format_number(kMaxLength) + "] (µm)";
   auto in_range = [](double length) { return length >= kMinLength && length <= kMaxLength; };
   if (semi_axes) {
     for (int axis = 0; axis < 3; ++axis) {
@@ -149,9 +150,9 @@ TwoBodyFields two_body_fields(const std::string& source, const BodySpec& body_i,
   fields.shape = name_i + ".semi_axes = " + format_vector(body_i.semi_axes) + ", " + name_j +
                  ".semi_axes = " + format_vector(body_j.semi_axes);
   fields.material = same_material(body_i.material, body_j.material)
-                       ? material_text(body_i.material, "[material]")
-                       : material_text(body_i.material, "[" + name_i + ".material]") + "; " +
-                             material_text(body_j.material, "[" + name_j + ".material]");
+                        ? material_text(body_i.material, "[material]")
+                        : material_text(body_i.material, "[" + name_i + ".material]") + "; " +
+                              material_text(body_j.material, "[" + name_j + ".material]");
   return fields;
 }
 
