@@ -157,7 +157,7 @@ TwoBodyFields two_body_fields(const std::string& source, const BodySpec& body_i,
 }
 
 std::string traced_constants_error(const ContactConstants& c, const TwoBodyFields& fields) {
-  const std::string error = validation_error(c);
+  std::string error = validation_error(c);
   if (error.empty()) return {};
   auto bad = [](double value) { return !std::isfinite(value) || value <= 0.0; };
   std::string origin;
