@@ -1,6 +1,8 @@
 // `ellc curve CASE.toml [-o out.csv] [--plot out.png] [--hertz hale|exact]`
 // A displacement-driven load/unload/reload run of one tip-to-tip contact (paper Sec. 5).
 
+#include <array>
+#include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <iostream>
@@ -35,9 +37,9 @@ BodySpec equal_volume_sphere(const BodySpec& body) {
   return sphere;
 }
 
-void check(const ContactConstants& constants, const std::string& source, const char* what) {
-  if (const std::string error = validation_error(constants); !error.empty())
-    throw InputError(source, std::string(what) + ": " + error);
+void check(const ContactConstants& constants, const TwoBodyFields& fields, const char* what) {
+  if (const std::string error = traced_constants_error(constants, fields); !error.empty())
+    throw InputError(fields.source, std::string(what) + ": " + error);
 }
 
 std::vector<LawResult> run(const ContactConstants& constants, const std::vector<double>& path) {
@@ -46,23 +48,65 @@ std::vector<LawResult> run(const ContactConstants& constants, const std::vector<
   return results;
 }
 
-void write_csv(std::ostream& out, const std::vector<double>& path, const ContactConstants& constants,
-               const std::vector<LawResult>& results, const std::vector<LawResult>& spheres,
-               const std::vector<LawResult>& elastic_fully_plastic) {
-  out.precision(17);
-  out << "overlap,force,regime,max_overlap,plastic_overlap,contact_semi_axis_major,contact_semi_axis_minor,"
-         "peak_pressure,overlap_over_yield,force_over_yield,force_equal_volume_spheres_over_yield,"
-         "force_elastic_fully_plastic_over_yield\n";
+constexpr std::size_t kColumns = 11;  // the numbers of a CSV row (the regime name aside)
+
+struct CsvRow {
+  std::array<double, kColumns> values;
+  const char* regime;
+};
+
+// Every number of the CSV, computed (and checked) before anything is written.
+std::vector<CsvRow> csv_rows(const std::vector<double>& path, const ContactConstants& constants,
+                             const std::vector<LawResult>& results, const std::vector<LawResult>& spheres,
+                             const std::vector<LawResult>& elastic_fully_plastic) {
+  std::vector<CsvRow> rows(path.size());
   for (std::size_t index = 0; index < path.size(); ++index) {
     const LawResult& result = results[index];
     const double previous_max = index == 0 ? 0.0 : results[index - 1].max_overlap;
     const ContactPatch patch = contact_patch(constants, path[index], previous_max);
-    out << path[index] << ',' << result.force << ',' << regime_name(result.regime) << ',' << result.max_overlap << ','
-        << plastic_overlap(constants, result.max_overlap) << ',' << patch.semi_axis_major << ','
-        << patch.semi_axis_minor << ',' << (patch.semi_axis_major > 0.0 ? patch.peak_pressure() : 0.0) << ','
-        << path[index] / constants.yield_overlap << ',' << result.force / constants.yield_force << ','
-        << spheres[index].force / constants.yield_force << ','
-        << elastic_fully_plastic[index].force / constants.yield_force << '\n';
+    rows[index] = {
+        {path[index], result.force, result.max_overlap, plastic_overlap(constants, result.max_overlap),
+         patch.semi_axis_major, patch.semi_axis_minor, patch.semi_axis_major > 0.0 ? patch.peak_pressure() : 0.0,
+         path[index] / constants.yield_overlap, result.force / constants.yield_force,
+         spheres[index].force / constants.yield_force, elastic_fully_plastic[index].force / constants.yield_force},
+        regime_name(result.regime)};
+  }
+  return rows;
+}
+
+// A result that overflows is traced back to the inputs it comes from (the law's scale is set by
+// E_e, Y and the curvatures; the protocol sets δ): never a NaN or inf in the output.
+void check_finite(const std::vector<CsvRow>& rows, const TwoBodyFields& fields) {
+  static constexpr std::array<const char*, kColumns> names{"overlap",
+                                                           "force",
+                                                           "max_overlap",
+                                                           "plastic_overlap",
+                                                           "contact_semi_axis_major",
+                                                           "contact_semi_axis_minor",
+                                                           "peak_pressure",
+                                                           "overlap_over_yield",
+                                                           "force_over_yield",
+                                                           "force_equal_volume_spheres_over_yield",
+                                                           "force_elastic_fully_plastic_over_yield"};
+  for (const CsvRow& row : rows)
+    for (std::size_t column = 0; column < kColumns; ++column)
+      if (!std::isfinite(row.values[column]))
+        throw InputError(fields.source, "the inputs " + fields.material + " with " + fields.shape +
+                                            " and [protocol] overlap " + format_number(row.values[0]) +
+                                            " µm overflow the number format (" + names[column] + " = " +
+                                            format_number(row.values[column]) +
+                                            "): expected a material and bodies whose force and pressure are finite");
+}
+
+void write_csv(std::ostream& out, const std::vector<CsvRow>& rows) {
+  out.precision(17);
+  out << "overlap,force,regime,max_overlap,plastic_overlap,contact_semi_axis_major,contact_semi_axis_minor,"
+         "peak_pressure,overlap_over_yield,force_over_yield,force_equal_volume_spheres_over_yield,"
+         "force_elastic_fully_plastic_over_yield\n";
+  for (const CsvRow& row : rows) {
+    out << row.values[0] << ',' << row.values[1] << ',' << row.regime;
+    for (std::size_t column = 2; column < kColumns; ++column) out << ',' << row.values[column];
+    out << '\n';
   }
 }
 
@@ -103,21 +147,26 @@ void run_curve(const CurveOptions& options) {
       equal_volume_sphere(curve_case.body_i), equal_volume_sphere(curve_case.body_j), model.hertz, model.law);
   const ContactConstants efp_constants =
       case_contact_constants(curve_case.body_i, curve_case.body_j, model.hertz, model.law.elastic_fully_plastic());
-  check(constants, options.case_path, "the ellipsoid pair");
-  check(sphere_constants, options.case_path, "the equal-volume spheres");
+  const TwoBodyFields fields =
+      two_body_fields(options.case_path, curve_case.body_i, "body_I", curve_case.body_j, "body_J");
+  check(constants, fields, "the ellipsoid pair");
+  check(sphere_constants, fields, "the equal-volume spheres");
+  check(efp_constants, fields, "the elastic-fully-plastic reference");
 
   const std::vector<double> path = protocol_overlaps(curve_case.waypoints, curve_case.points_per_segment);
   const auto results = run(constants, path);
   const auto spheres = run(sphere_constants, path);
   const auto elastic_fully_plastic = run(efp_constants, path);
+  const std::vector<CsvRow> rows = csv_rows(path, constants, results, spheres, elastic_fully_plastic);
+  check_finite(rows, fields);
 
   std::FILE* summary = options.csv_path.empty() ? stderr : stdout;  // CSV on stdout when no -o
   if (options.csv_path.empty()) {
-    write_csv(std::cout, path, constants, results, spheres, elastic_fully_plastic);
+    write_csv(std::cout, rows);
   } else {
     std::ofstream file(options.csv_path);
     if (!file) throw InputError(options.csv_path, "cannot open the output file for writing");
-    write_csv(file, path, constants, results, spheres, elastic_fully_plastic);
+    write_csv(file, rows);
     if (!file) throw std::runtime_error("writing " + options.csv_path + " failed");
   }
   print_summary(summary, curve_case, constants, model.hertz, path, results);

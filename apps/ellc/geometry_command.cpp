@@ -58,10 +58,36 @@ void print_law(const NormalContact& contact, HertzMode mode) {
   print_vector("  application point", contact.application_point);
 }
 
+// The input fields a result of this poses file depends on, for messages.
+TwoBodyFields poses_fields(const PosesCase& poses, const std::string& source) {
+  const BodySpec& spec_i = poses.body_i.spec;
+  if (poses.body_j) {
+    TwoBodyFields fields = two_body_fields(source, spec_i, "body_I", poses.body_j->spec, "body_J");
+    fields.shape += ", body_I.position = " + format_vector(poses.body_i.pose.position) +
+                    ", body_J.position = " + format_vector(poses.body_j->pose.position);
+    return fields;
+  }
+  BodySpec wall_side = spec_i;  // the wall has the body's shape for naming purposes only
+  if (poses.wall->material) wall_side.material = *poses.wall->material;
+  TwoBodyFields fields = two_body_fields(source, spec_i, "body_I", wall_side, "wall");
+  fields.shape = "body_I.semi_axes = " + format_vector(spec_i.semi_axes) +
+                 ", body_I.position = " + format_vector(poses.body_i.pose.position) +
+                 ", wall.point = " + format_vector(poses.wall->plane.point);
+  return fields;
+}
+
+bool finite_geometry(const ContactGeometry& g) {
+  return std::isfinite(g.overlap) && g.normal.allFinite() && g.point.allFinite() && g.surface_point_i.allFinite() &&
+         g.surface_point_j.allFinite() && std::isfinite(g.curvature_i.kappa_1) &&
+         std::isfinite(g.curvature_i.kappa_2) && std::isfinite(g.curvature_j.kappa_1) &&
+         std::isfinite(g.curvature_j.kappa_2) && std::isfinite(g.alpha);
+}
+
 void run_geometry(const GeometryOptions& options) {
   PosesCase poses = read_poses(options.poses_path);
   if (!options.hertz.empty()) poses.model.hertz = options.hertz == "exact" ? HertzMode::exact : HertzMode::hale;
   for (const auto& warning : poses.warnings) std::fprintf(stderr, "ellc: warning: %s\n", warning.c_str());
+  const TwoBodyFields fields = poses_fields(poses, options.poses_path);
 
   const Ellipsoid body_i(poses.body_i.spec.semi_axes, poses.body_i.pose);
   NarrowPhaseResult result;
@@ -76,14 +102,27 @@ void run_geometry(const GeometryOptions& options) {
     result = wall_contact(body_i, poses.wall->plane);
     material = mix(poses.body_i.spec.material, poses.wall->material.value_or(poses.body_i.spec.material));
     mean_radius_sum = wall_mean_radius_sum(body_i);
+    // Wholly behind the wall: no contact of the law's kind (and δ without bound).
+    if (result.status == NarrowPhaseStatus::contact && result.geometry.overlap > 2.0 * body_i.bounding_radius())
+      throw InputError(options.poses_path, "body_I.position = " + format_vector(poses.body_i.pose.position) +
+                                               " with wall.point = " + format_vector(poses.wall->plane.point) +
+                                               " puts the body wholly behind the wall (overlap " +
+                                               format_number(result.geometry.overlap) +
+                                               " µm): expected at most twice its largest semi-axis, " +
+                                               format_number(2.0 * body_i.bounding_radius()) + " µm");
   }
 
   const ContactGeometry& g = result.geometry;
+  if (result.status != NarrowPhaseStatus::failed && !finite_geometry(g))
+    throw InputError(options.poses_path, "the inputs " + fields.shape +
+                                             " overflow the number format in the contact geometry: expected "
+                                             "positions and semi-axes of comparable magnitude");
   std::printf("ellc geometry: %s (%s)\n", options.poses_path.c_str(),
               poses.body_j ? "ellipsoid pair" : "ellipsoid and wall");
   std::printf("  status                 %s\n", status_name(result.status));
   if (result.status == NarrowPhaseStatus::failed)
-    throw std::runtime_error("the narrow phase did not converge for this configuration (status failed)");
+    throw std::runtime_error("the narrow phase did not converge for this configuration (status failed) of " +
+                             fields.shape);
   std::printf("  overlap                %.10g µm%s\n", g.overlap,
               result.status == NarrowPhaseStatus::separated ? "  (<= 0: minus the gap along the normal)" : "");
   print_vector("normal (I to J)", g.normal);
@@ -93,15 +132,22 @@ void run_geometry(const GeometryOptions& options) {
   std::printf("  newton iterations      %d (contact-function iterations %d)\n", result.iterations,
               result.contact_function_iterations);
   if (result.status != NarrowPhaseStatus::contact) return;
+  const NormalContact contact =
+      normal_contact(g, material, mean_radius_sum, poses.model.hertz, poses.model.law, poses.max_overlap);
+  if (const std::string error = traced_constants_error(contact.constants, fields); !error.empty())
+    throw InputError(options.poses_path, "the contact constants of this configuration: " + error);
+  if (!std::isfinite(contact.law.force) || !std::isfinite(contact.law.max_overlap) || !contact.force_on_j.allFinite() ||
+      !contact.application_point.allFinite())
+    throw InputError(options.poses_path,
+                     "the inputs " + fields.material + " with " + fields.shape +
+                         ", max_overlap = " + format_number(poses.max_overlap) +
+                         " overflow the number format (force = " + format_number(contact.law.force) +
+                         " µN): expected a material and bodies whose force is finite");
   print_curvature("I", g.curvature_i);
   print_curvature(poses.body_j ? "J" : "wall", g.curvature_j);
   std::printf("  alpha                  %.10g deg\n", g.alpha / kDegree);
   std::printf("  r_hat I+J              %.10g µm%s\n", mean_radius_sum,
               poses.body_j ? "" : "  (wall: 2 r_hat, mirror image)");
-  const NormalContact contact =
-      normal_contact(g, material, mean_radius_sum, poses.model.hertz, poses.model.law, poses.max_overlap);
-  if (const std::string error = validation_error(contact.constants); !error.empty())
-    throw InputError(options.poses_path, "the contact constants of this configuration: " + error);
   print_law(contact, poses.model.hertz);
 }
 

@@ -132,3 +132,27 @@ TEST(PosesFile, RequiresASecondBodyOrAWall) {
 }
 
 }  // namespace
+
+namespace {
+
+// Issue 19, item 1: positions whose squared distance overflows (≥ 1e155 gave NaN), a semi-axis of
+// 1e200 against a wall, and max_overlap = 1e308 are rejected by the field, with the bound.
+TEST(PosesFile, RejectsValuesBeyondTheNumberFormatByName) {
+  EXPECT_NE(rejection(replaced(kPair, "position = [6.0, 5.5, 1.0]", "position = [2e155, 5.5, 1.0]"))
+                .find("body_J.position[0] = "),
+            std::string::npos);
+  EXPECT_NE(rejection(replaced(kPair, "semi_axes = [5.0, 3.0, 4.0]", "semi_axes = [5.0, 3.0, 1e200]"))
+                .find("body_I.semi_axes[2] = "),
+            std::string::npos);
+  const std::string wall = "[wall]\npoint = [0.0, 0.0, -1e300]\nnormal = [0.0, 0.0, 1.0]\n";
+  EXPECT_NE(rejection(replaced(kPair, kBodyJ, wall)).find("wall.point[2] = "), std::string::npos);
+  const std::string message = rejection("max_overlap = 1e308\n" + kPair);
+  EXPECT_NE(message.find("max_overlap = "), std::string::npos) << message;
+  EXPECT_NE(message.find("at most 11 µm"), std::string::npos) << message;  // a_max^I + a_max^J = 5 + 6
+  const std::string on_wall = rejection(
+      "max_overlap = 10.5\n" + replaced(kPair, kBodyJ, "[wall]\npoint = [0.0, 0.0, 0.0]\nnormal = [0.0, 0.0, 1.0]\n"));
+  EXPECT_NE(on_wall.find("at most 10 µm"), std::string::npos) << on_wall;  // 2 a_max^I
+  EXPECT_NO_THROW((void)ellc::parse_poses("max_overlap = 11.0\n" + kPair, "poses.toml"));
+}
+
+}  // namespace

@@ -155,4 +155,49 @@ TEST_F(CurveCli, ShippedPaperCasesRun) {
     EXPECT_EQ(run.output.find("warning"), std::string::npos) << run.output;
   }
 }
+// Issue 19, item 1: a run either writes finite numbers or stops with exit code 2 naming the input
+// field. A waypoint near 1e308 printed NaN forces with exit code 0.
+TEST_F(CurveCli, HugeWaypointIsRejectedByName) {
+  expect_input_error(variant("waypoints = [0.0, 2.0, 0.0, 2.6, 0.0]", "waypoints = [0.0, 1.7e308, 0.0]"),
+                     {"protocol.waypoints[1] = ", "a_I + a_J"});
+  EXPECT_FALSE(fs::exists(dir / "out.csv"));
+}
+
+// A material whose derived yield overlap underflows (Y/E = 1e-600) names the material fields.
+TEST_F(CurveCli, InvalidDerivedConstantNamesTheMaterial) {
+  std::string text = kGoodCase;
+  text.replace(text.find("youngs_modulus = 142000.0"), 25, "youngs_modulus = 1e300");
+  text.replace(text.find("yield_stress = 7900.0"), 21, "yield_stress = 1e-300");
+  const CliRun run = run_cli("curve " + write(text) + " -o " + (dir / "out.csv").string());
+  EXPECT_EQ(run.exit_code, 2) << run.output;
+  EXPECT_NE(run.output.find("[material] youngs_modulus = 1"), std::string::npos) << run.output;
+  EXPECT_EQ(run.output.find("nan"), std::string::npos) << run.output;
+}
+
+// Every length at the top of its range and a stiff material: whatever the law gives is either
+// written finite or refused naming the inputs; never a NaN or inf in the CSV, never exit code 0
+// with one.
+TEST_F(CurveCli, ExtremeButValidInputsGiveFiniteNumbersOrANamedError) {
+  for (const char* modulus : {"1e300", "1e250", "142000.0"}) {
+    std::string text = kGoodCase;
+    text.replace(text.find("youngs_modulus = 142000.0"), 25, std::string("youngs_modulus = ") + modulus);
+    text.replace(text.find("yield_stress = 7900.0"), 21, "yield_stress = 1e280");
+    text.replace(text.find("mean_radius = 10.0"), 18, "mean_radius = 1e49");
+    text.replace(text.find("waypoints = [0.0, 2.0, 0.0, 2.6, 0.0]"), 37, "waypoints = [0.0, 1e48, 0.0]");
+    const fs::path csv = dir / "out.csv";
+    fs::remove(csv);
+    const CliRun run = run_cli("curve " + write(text) + " -o " + csv.string());
+    if (run.exit_code == 0) {
+      std::ifstream in(csv);
+      const std::string content((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+      EXPECT_EQ(content.find("nan"), std::string::npos) << modulus;
+      EXPECT_EQ(content.find("inf"), std::string::npos) << modulus;
+    } else {
+      EXPECT_EQ(run.exit_code, 2) << run.output;
+      EXPECT_NE(run.output.find("youngs_modulus = "), std::string::npos) << run.output;
+      EXPECT_FALSE(fs::exists(csv)) << modulus;
+    }
+  }
+}
+
 }  // namespace

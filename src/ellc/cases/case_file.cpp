@@ -28,21 +28,35 @@ BodySpec read_body(TableReader& table, const std::optional<Material>& default_ma
   if (semi_axes && (aspect || mean))
     throw InputError(table.source(),
                      "[" + table.path() + "] gives both semi_axes and aspect/mean_radius: expected one of the two");
+  const std::string length_range =
+      "a length in [" + format_number(kMinLength) + ", " + format_number(kMaxLength) + "] (µm)";
+  auto in_range = [](double length) { return length >= kMinLength && length <= kMaxLength; };
   if (semi_axes) {
     for (int axis = 0; axis < 3; ++axis) {
       if ((*semi_axes)[axis] <= 0.0)
         table.fail("semi_axes[" + std::to_string(axis) + "]", (*semi_axes)[axis], "a finite number > 0 (µm)");
+      if (!in_range((*semi_axes)[axis]))
+        table.fail("semi_axes[" + std::to_string(axis) + "]", (*semi_axes)[axis], length_range);
       body.semi_axes[axis] = (*semi_axes)[axis];
     }
   } else if (aspect) {
     if (!mean) table.fail("mean_radius", "missing", "a number > 0 (µm), required with aspect");
     if (*mean <= 0.0) table.fail("mean_radius", *mean, "a finite number > 0 (µm)");
+    if (!in_range(*mean)) table.fail("mean_radius", *mean, length_range);
     for (int axis = 0; axis < 3; ++axis)
-      if ((*aspect)[axis] <= 0.0)
-        table.fail("aspect[" + std::to_string(axis) + "]", (*aspect)[axis], "a finite number > 0");
+      if ((*aspect)[axis] <= 0.0 || !in_range((*aspect)[axis]))
+        table.fail("aspect[" + std::to_string(axis) + "]", (*aspect)[axis],
+                   "a finite number in [" + format_number(kMinLength) + ", " + format_number(kMaxLength) + "]");
     // Scale the aspect so that (abc)^{1/3} = r̂ (eq. 50); aspect[0] need not be exactly 1.
+    // (Each ratio scaled by its cube root first: the product of three ratios may leave the range.)
     const Eigen::Vector3d ratios((*aspect)[0], (*aspect)[1], (*aspect)[2]);
-    body.semi_axes = ratios * (*mean / std::cbrt(ratios.prod()));
+    const double scale = *mean / (std::cbrt(ratios[0]) * std::cbrt(ratios[1]) * std::cbrt(ratios[2]));
+    body.semi_axes = ratios * scale;
+    for (int axis = 0; axis < 3; ++axis)
+      if (!(in_range(body.semi_axes[axis])))
+        table.fail("aspect", format_vector(ratios) + " with mean_radius = " + format_number(*mean),
+                   "semi-axes in [" + format_number(kMinLength) + ", " + format_number(kMaxLength) +
+                       "] (µm); this gives " + format_number(body.semi_axes[axis]));
   } else {
     table.fail("semi_axes", "missing", "semi_axes = [a, b, c] or aspect = [1, b/a, c/a] with mean_radius");
   }
@@ -106,6 +120,61 @@ ContactConstants case_contact_constants(const BodySpec& body_i, const BodySpec& 
 
 namespace {
 
+std::string material_text(const Material& material, const std::string& table) {
+  return table + " youngs_modulus = " + format_number(material.youngs_modulus) +
+         ", poisson_ratio = " + format_number(material.poisson_ratio) +
+         ", yield_stress = " + format_number(material.yield_stress);
+}
+
+bool same_material(const Material& a, const Material& b) {
+  return a.youngs_modulus == b.youngs_modulus && a.poisson_ratio == b.poisson_ratio && a.yield_stress == b.yield_stress;
+}
+
+}  // namespace
+
+std::string format_vector(const Eigen::Vector3d& v) {
+  std::string text(1, '[');  // (appended piece by piece: GCC 12 warns falsely on "[" + std::string)
+  text += format_number(v.x());
+  text += ", ";
+  text += format_number(v.y());
+  text += ", ";
+  text += format_number(v.z());
+  text += ']';
+  return text;
+}
+
+TwoBodyFields two_body_fields(const std::string& source, const BodySpec& body_i, const std::string& name_i,
+                              const BodySpec& body_j, const std::string& name_j) {
+  TwoBodyFields fields;
+  fields.source = source;
+  fields.shape = name_i + ".semi_axes = " + format_vector(body_i.semi_axes) + ", " + name_j +
+                 ".semi_axes = " + format_vector(body_j.semi_axes);
+  fields.material = same_material(body_i.material, body_j.material)
+                        ? material_text(body_i.material, "[material]")
+                        : material_text(body_i.material, "[" + name_i + ".material]") + "; " +
+                              material_text(body_j.material, "[" + name_j + ".material]");
+  return fields;
+}
+
+std::string traced_constants_error(const ContactConstants& c, const TwoBodyFields& fields) {
+  std::string error = validation_error(c);
+  if (error.empty()) return {};
+  auto bad = [](double value) { return !std::isfinite(value) || value <= 0.0; };
+  std::string origin;
+  if (bad(c.effective_modulus) || bad(c.yield_stress)) {
+    origin = fields.material;
+  } else if (bad(c.equivalent_radius) || bad(c.f1) || bad(c.f2) || !std::isfinite(c.eccentricity_sq)) {
+    origin = fields.shape + " (the curvatures at the contact)";
+  } else if (bad(c.yield_overlap)) {
+    origin = fields.material + " with " + fields.shape + " (delta_Y ~ (Y/E)^2 R_e)";
+  } else {
+    return error;  // λ_max, ε_max: the message already names the [model] fit
+  }
+  return "the inputs " + origin + " give no valid contact law: " + error;
+}
+
+namespace {
+
 CurveCase read_case(const toml::table& root_table, const std::string& source) {
   TableReader root(root_table, "", source);
   CurveCase result;
@@ -124,17 +193,40 @@ CurveCase read_case(const toml::table& root_table, const std::string& source) {
     const double scale = relative ? mean_radius(result.body_i.semi_axes) + mean_radius(result.body_j.semi_axes) : 1.0;
     const auto& given = absolute ? *absolute : *relative;
     const char* key = absolute ? "waypoints" : "waypoints_relative";
+    // The bodies touch tip to tip along x: at δ = a_I + a_J their centres coincide, beyond it the
+    // configuration has no meaning (and 1e308 would overflow δ^{3/2}).
+    const double reach = result.body_i.semi_axes.x() + result.body_j.semi_axes.x();
     for (std::size_t index = 0; index < given.size(); ++index) {
       if (given[index] < 0.0)
         protocol.fail(std::string(key) + "[" + std::to_string(index) + "]", given[index], "a finite number >= 0");
-      result.waypoints.push_back(given[index] * scale);
+      const double overlap = given[index] * scale;
+      if (overlap > reach)
+        protocol.fail(std::string(key) + "[" + std::to_string(index) + "]", given[index],
+                      "an overlap of at most a_I + a_J = " + format_number(reach) +
+                          " µm (the x semi-axes of body_I and body_J; the centres coincide there)");
+      result.waypoints.push_back(overlap);
     }
     if (given.size() < 2) protocol.fail(key, "an array of 1 element", "at least two waypoints");
     result.points_per_segment = protocol.integer_at_least("points_per_segment", 1, 50);
+    if (result.points_per_segment > kMaxPointsPerSegment)
+      protocol.fail("points_per_segment", static_cast<double>(result.points_per_segment),
+                    "at most " + std::to_string(kMaxPointsPerSegment));
+    if ((given.size() - 1) * static_cast<std::size_t>(result.points_per_segment) > kMaxCurvePoints)
+      protocol.fail("points_per_segment", static_cast<double>(result.points_per_segment),
+                    "at most " + std::to_string(kMaxCurvePoints) + " points in all (" +
+                        std::to_string(given.size() - 1) + " segments)");
     protocol.finish();
   }
   if (auto model = root.optional_table("model")) result.model = read_model(*model);
   root.finish();
+  // The law must be evaluable for these bodies and materials; a bad derived quantity (R_e, δ_Y)
+  // is reported with the input fields it comes from.
+  const ContactConstants constants =
+      case_contact_constants(result.body_i, result.body_j, result.model.hertz, result.model.law);
+  if (const std::string error =
+          traced_constants_error(constants, two_body_fields(source, result.body_i, "body_I", result.body_j, "body_J"));
+      !error.empty())
+    throw InputError(source, error);
   return result;
 }
 

@@ -4,6 +4,7 @@
 
 #include <Eigen/Core>
 
+#include <cstddef>
 #include <optional>
 #include <string>
 #include <vector>
@@ -59,6 +60,35 @@ struct BodyPair {
 // from tip_contact(), E_e and Y mixed from the bodies' materials, r̂^{I,J} = r̂^I + r̂^J.
 [[nodiscard]] ContactConstants case_contact_constants(const BodySpec& body_i, const BodySpec& body_j, HertzMode mode,
                                                       const LawParameters& law);
+
+// Bounds of the number format for the two-body tools (docs/geometry.md §10). Every length that
+// places or shapes a body (semi-axes, mean_radius, positions, the wall's point) lies within
+// [−kMaxLength, kMaxLength], semi-axes in [kMinLength, kMaxLength]: then squares and inverse
+// squares of lengths (≤ 1e100), curvatures a/c² (≤ 1e150), their products in eq. (5) (≤ 1e300)
+// and squared centre distances stay finite. Overlaps are bounded by the bodies themselves (an
+// overlap beyond a_I + a_J has the centres passed through each other).
+inline constexpr double kMaxLength = 1e50;
+inline constexpr double kMinLength = 1e-50;
+inline constexpr long kMaxPointsPerSegment = 1'000'000;
+inline constexpr std::size_t kMaxCurvePoints = 10'000'000;
+
+// "[x, y, z]" in the short number form of messages.
+[[nodiscard]] std::string format_vector(const Eigen::Vector3d& vector);
+
+// The input fields a two-body result depends on, for tracing a non-finite or invalid derived
+// quantity back to what the user wrote (e.g. "[material] / [body_I.material]").
+struct TwoBodyFields {
+  std::string source;    // file name
+  std::string shape;     // e.g. "body_I.semi_axes = [..], body_J.semi_axes = [..]"
+  std::string material;  // e.g. "material.youngs_modulus = .., material.yield_stress = .."
+};
+[[nodiscard]] TwoBodyFields two_body_fields(const std::string& source, const BodySpec& body_i,
+                                            const std::string& name_i, const BodySpec& body_j,
+                                            const std::string& name_j);
+// Empty when the constants are valid; otherwise a sentence that names the input fields the bad
+// quantity comes from (the shape for R_e, e, f1, f2; the material for E_e, Y; both for δ_Y;
+// [model] for λ_max, ε_max), then the derived quantity and its value.
+[[nodiscard]] std::string traced_constants_error(const ContactConstants& constants, const TwoBodyFields& fields);
 
 // The calibrated range of the transition fits (paper Table 2): b/a and c/a in [0.5, 2].
 inline constexpr double kCalibratedAspectMin = 0.5;

@@ -15,6 +15,16 @@ constexpr double kDegree = std::numbers::pi / 180.0;
 
 Eigen::Vector3d vector3(const std::vector<double>& values) { return {values[0], values[1], values[2]}; }
 
+// A point in space (a body's position, the wall's point): each coordinate within ±kMaxLength, so
+// that differences and squared distances of points stay finite (docs/geometry.md §10).
+Eigen::Vector3d point3(TableReader& table, const char* key, const std::vector<double>& values) {
+  for (std::size_t axis = 0; axis < 3; ++axis)
+    if (!(std::abs(values[axis]) <= kMaxLength))
+      table.fail(std::string(key) + "[" + std::to_string(axis) + "]", values[axis],
+                 "a coordinate within ±" + format_number(kMaxLength) + " (µm)");
+  return vector3(values);
+}
+
 Eigen::Vector3d unit_vector(TableReader& table, const char* key, const std::vector<double>& values) {
   const Eigen::Vector3d vector = vector3(values);
   const double length = vector.norm();
@@ -29,7 +39,8 @@ Eigen::Vector3d unit_vector(TableReader& table, const char* key, const std::vect
 PosedBodySpec read_posed_body(TableReader& table, const std::optional<Material>& shared_material,
                               std::vector<std::string>& warnings) {
   PosedBodySpec body;
-  if (const auto position = table.optional_numbers("position", 3)) body.pose.position = vector3(*position);
+  if (const auto position = table.optional_numbers("position", 3))
+    body.pose.position = point3(table, "position", *position);
   const auto orientation = table.optional_numbers("orientation", 4);
   const auto axis = table.optional_numbers("axis", 3);
   const auto angle = table.optional_number("angle_deg");
@@ -58,7 +69,7 @@ WallSpec read_wall(TableReader& table) {
   if (!point) table.fail("point", "missing", "point = [x, y, z] on the wall");
   const auto normal = table.optional_numbers("normal", 3);
   if (!normal) table.fail("normal", "missing", "normal = [x, y, z], pointing to the particles' side");
-  wall.plane = {vector3(*point), unit_vector(table, "normal", *normal)};
+  wall.plane = {point3(table, "point", *point), unit_vector(table, "normal", *normal)};
   if (auto material = table.optional_table("material")) wall.material = read_material(*material);
   table.finish();
   return wall;
@@ -82,6 +93,16 @@ PosesCase read_poses_table(const toml::table& root_table, const std::string& sou
   if (auto model = root.optional_table("model")) poses.model = read_model(*model);
   poses.max_overlap = root.number_or("max_overlap", 0.0);
   if (poses.max_overlap < 0.0) root.fail("max_overlap", poses.max_overlap, "a finite number >= 0 (µm)");
+  // δ_* of a real history: the bodies cannot have overlapped by more than their reach (pair:
+  // the centres coincide at a_max^I + a_max^J; wall: the body is wholly behind it at 2 a_max^I).
+  const double reach = poses.body_j ? poses.body_i.spec.semi_axes.maxCoeff() + poses.body_j->spec.semi_axes.maxCoeff()
+                                    : 2.0 * poses.body_i.spec.semi_axes.maxCoeff();
+  if (poses.max_overlap > reach)
+    root.fail("max_overlap", poses.max_overlap,
+              "at most " + format_number(reach) + " µm (" +
+                  (poses.body_j ? std::string("the largest semi-axes of body_I and body_J together")
+                                : std::string("twice the largest semi-axis of body_I")) +
+                  ": no overlap can have been deeper)");
   root.finish();
   return poses;
 }

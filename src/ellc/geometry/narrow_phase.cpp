@@ -117,6 +117,71 @@ EIGEN_ALWAYS_INLINE Hessian2 reach_hessian(const PairData& pair, const AlongNorm
           ((forms.q22 - a2 * a2) * at.inverse_reach).sum()};
 }
 
+// The step where the Hessian H is not safely positive definite (the Levenberg-shifted step s is
+// given): g is nearly flat or curved downwards along some tangent direction, as along the face of
+// a flat body or across the rim of a thin one deeper in than its radius of curvature. The shifted
+// step alone crawls there (length ≈ |∇g| / shift; 40 such steps were the `failed` of flat 1:100
+// pairs, docs/geometry.md §6). So
+//  1. for a negative eigenvalue λ of H the step gets a component t v along its unit eigenvector,
+//     downhill, with t ≥ sqrt(10⁻¹² scale/|λ|): long enough that the predicted fall ½|λ|t² stands
+//     well above the rounding of g (this also leaves a saddle with ∇g ≈ 0), and
+//  2. after the usual halving until g does not rise, the step is doubled (up to 0.5 rad) while g
+//     keeps falling, so a long flat valley takes a handful of evaluations, not hundreds of steps.
+// Monotone in g like the Newton step. Pairs whose Hessian stays positive definite never come here.
+// Returns false when no step lowers g (the solve gives up).
+bool flat_or_saddle_step(const PairData& pair, const geometry_detail::TangentFrame& frame, const Hessian2& hessian,
+                         double lowest, double scale, double s1, double s2, double length, AlongNormal& at) noexcept {
+  const double g1 = frame.t1.dot(at.gradient);
+  const double g2 = frame.t2.dot(at.gradient);
+  if (lowest < 0.0) {
+    // Eigenvector of λ: the larger of the two rows of (H − λ I), turned by 90°.
+    const double row1 = std::abs(hessian.h11 - lowest) + std::abs(hessian.h12);
+    const double row2 = std::abs(hessian.h22 - lowest) + std::abs(hessian.h12);
+    double v1 = row1 >= row2 ? hessian.h12 : lowest - hessian.h22;
+    double v2 = row1 >= row2 ? lowest - hessian.h11 : hessian.h12;
+    const double norm = std::sqrt(v1 * v1 + v2 * v2);
+    if (norm > 0.0 && std::isfinite(norm)) {
+      const double sign = v1 * g1 + v2 * g2 > 0.0 ? -1.0 : 1.0;  // downhill (either way at a saddle)
+      const double t = std::min(kMaxStep, std::max(length, std::sqrt(1e-12 * scale / -lowest)));
+      v1 *= sign * t / norm;
+      v2 *= sign * t / norm;
+      s1 += v1;
+      s2 += v2;
+      length = std::sqrt(s1 * s1 + s2 * s2);
+      if (length > kMaxStep) {
+        s1 *= kMaxStep / length;
+        s2 *= kMaxStep / length;
+        length = kMaxStep;
+      }
+    }
+  }
+  const Eigen::Vector3d base = at.normal;
+  const double base_overlap = at.overlap;
+  bool accepted = false;
+  for (int halving = 0; halving < 40 && !accepted; ++halving) {
+    const AlongNormal trial = pair.along(unit(base + s1 * frame.t1 + s2 * frame.t2));
+    if (trial.overlap <= base_overlap + 1e-15 * scale) {
+      at = trial;
+      accepted = true;
+    } else {
+      s1 *= 0.5;
+      s2 *= 0.5;
+      length *= 0.5;
+    }
+  }
+  if (!accepted) return false;
+  while (length < kMaxStep) {
+    const double factor = std::min(2.0, kMaxStep / length);
+    s1 *= factor;
+    s2 *= factor;
+    length *= factor;
+    const AlongNormal trial = pair.along(unit(base + s1 * frame.t1 + s2 * frame.t2));
+    if (!(trial.overlap < at.overlap)) break;
+    at = trial;
+  }
+  return true;
+}
+
 // Damped Newton on the unit sphere for a local minimum of g. Monotone in g.
 Solve common_normal(const PairData& pair, const AlongNormal& start, double final_step) noexcept {
   Solve solve;
@@ -167,6 +232,10 @@ Solve common_normal(const PairData& pair, const AlongNormal& start, double final
       }
       continue;
     }
+    if (shift != 0.0) {
+      if (!flat_or_saddle_step(pair, frame, {h11, h12, h22}, lowest, scale, s1, s2, length, solve.at)) return solve;
+      continue;
+    }
     bool accepted = false;
     for (int halving = 0; halving < 40 && !accepted; ++halving) {
       const AlongNormal trial = pair.along(unit(at.normal + s1 * frame.t1 + s2 * frame.t2));
@@ -174,7 +243,7 @@ Solve common_normal(const PairData& pair, const AlongNormal& start, double final
         solve.at = trial;
         accepted = true;
         // A full Newton step (not damped, not shortened) this short ends the solve, as above.
-        if (halving == 0 && shift == 0.0 && length <= final_step) {
+        if (halving == 0 && length <= final_step) {
           solve.converged = true;
           return solve;
         }
@@ -291,8 +360,14 @@ NarrowPhaseResult ellipsoid_contact(const Ellipsoid& body_i, const Ellipsoid& bo
     const ContactFunctionResult contact_function = perram_wertheim(body_i, body_j, true, 1e-6);
     result.contact_function_iterations = contact_function.iterations;
     if (contact_function.separated) {
-      mark_separated(body_i, body_j, pair.along(contact_function.normal), result);
-      return result;
+      // F > 1 proves g < 0 along this normal in exact arithmetic; at touching, F may exceed 1 by
+      // a rounding while g is a rounding above 0: then the Newton solve decides (never a
+      // `separated` with a positive overlap).
+      const AlongNormal along = pair.along(contact_function.normal);
+      if (along.overlap <= 0.0) {
+        mark_separated(body_i, body_j, along, result);
+        return result;
+      }
     }
     start = contact_function.normal;
   } else {
