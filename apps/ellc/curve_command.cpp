@@ -35,9 +35,16 @@ BodySpec equal_volume_sphere(const BodySpec& body) {
   return sphere;
 }
 
-void check(const ContactConstants& constants, const std::string& source, const char* what) {
+std::string axes_text(const Eigen::Vector3d& axes) {
+  return "[" + format_number(axes.x()) + ", " + format_number(axes.y()) + ", " + format_number(axes.z()) + "]";
+}
+
+// A derived quantity out of range (R_e = -nan) is reported with the fields it came from.
+void check(const ContactConstants& constants, const std::string& source, const char* what, const CurveCase& curve) {
   if (const std::string error = validation_error(constants); !error.empty())
-    throw InputError(source, std::string(what) + ": " + error);
+    throw InputError(source, "body_I.semi_axes = " + axes_text(curve.body_i.semi_axes) + " and body_J.semi_axes = " +
+                                 axes_text(curve.body_j.semi_axes) + " (with [material] and [model]): " + what +
+                                 " have contact constants out of range: " + error);
 }
 
 std::vector<LawResult> run(const ContactConstants& constants, const std::vector<double>& path) {
@@ -103,8 +110,8 @@ void run_curve(const CurveOptions& options) {
       equal_volume_sphere(curve_case.body_i), equal_volume_sphere(curve_case.body_j), model.hertz, model.law);
   const ContactConstants efp_constants =
       case_contact_constants(curve_case.body_i, curve_case.body_j, model.hertz, model.law.elastic_fully_plastic());
-  check(constants, options.case_path, "the ellipsoid pair");
-  check(sphere_constants, options.case_path, "the equal-volume spheres");
+  check(constants, options.case_path, "the ellipsoid pair", curve_case);
+  check(sphere_constants, options.case_path, "the equal-volume spheres", curve_case);
 
   const std::vector<double> path = protocol_overlaps(curve_case.waypoints, curve_case.points_per_segment);
   const auto results = run(constants, path);
