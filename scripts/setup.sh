@@ -14,6 +14,7 @@ packages=(
   gmsh python3-gmsh calculix-ccx
   clang-format-15 clang-tidy-15 clang-15 libomp-15-dev llvm-15  # guard rails; TSan with libomp, llvm-symbolizer
   debootstrap  # the clean Debian root of scripts/check_deb.sh
+  libfuzzer-15-dev  # scripts/fuzz.sh (with clang-15)
 )
 
 missing=()

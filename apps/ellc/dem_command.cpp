@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <charconv>
+#include <cmath>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
@@ -20,6 +21,7 @@
 #include <sstream>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 #ifdef _OPENMP
@@ -29,6 +31,7 @@
 #include "command_registry.hpp"
 #include "ellc/io/input_error.hpp"
 #include "ellc/scenario/ensemble.hpp"
+#include "ellc/scenario/run_plan.hpp"
 #include "ellc/scenario/scenario_runner.hpp"
 #include "plot_runner.hpp"
 
@@ -124,6 +127,22 @@ void print_summary(const scenario::RunSummary& s, const std::string& directory, 
   std::printf("  outputs in %s: timeseries.csv summary.txt vtk/ checkpoint.bin\n", directory.c_str());
 }
 
+// The last line of defence of the rule "finite numbers or an error" (docs/input_limits.md): the
+// input bounds should make this unreachable, so a non-finite result is reported, not printed.
+void check_finite_summary(const scenario::RunSummary& s, const std::string& source) {
+  const std::pair<const char*, double> results[] = {
+      {"max pressure", s.max_pressure},         {"loaded thickness", s.loaded_thickness},
+      {"final thickness", s.final_thickness},   {"springback", s.springback_percent},
+      {"porosity", s.final_porosity},           {"plastic energy", s.plastic_dissipation},
+      {"plate work", s.plate_work},             {"energy residual", s.energy_residual},
+      {"simulated time", s.time}};
+  for (const auto& [name, value] : results)
+    if (!std::isfinite(value))
+      throw std::runtime_error(source + ": the run's " + name + " is " + format_number(value) +
+                               ", not a finite number; an input beyond the bounds of docs/input_limits.md is the "
+                               "likely cause (please report the scenario: the bounds should have caught it)");
+}
+
 // OpenMP threads that spin at barriers (libgomp's default) lose their time slices to each other
 // when the machine is busier than its cores, and a 2-thread run then takes ~10x longer than a
 // 1-thread one. libgomp reads its wait policy once, before main(), so `ellc dem` re-executes
@@ -170,8 +189,9 @@ scenario::RunSummary run_single(const DemOptions& options, scenario::Scenario lo
   progress.finish();
   const std::string checkpoint = (std::filesystem::path(runner.output_directory()) / "checkpoint.bin").string();
   if (!runner.done()) runner.write_checkpoint(checkpoint);
-  runner.write_summary();
   const scenario::RunSummary summary = runner.summary();
+  check_finite_summary(summary, runner.scenario().source);
+  runner.write_summary();
   print_summary(summary, runner.output_directory(), progress.seconds());
   std::fflush(stdout);  // the warnings after the summary they qualify, also when both go to one file
   for (const auto& warning : scenario::summary_warnings(summary))
@@ -312,12 +332,26 @@ void run_members(const DemOptions& options, const scenario::Scenario& loaded, co
   }
 }
 
+// The planned work (scenario/run_plan.hpp), printed before anything is built; beyond the stated
+// limits only with --force, and never what the engine cannot represent.
+void check_plan(const DemOptions& options, const scenario::Scenario& loaded) {
+  const scenario::RunPlan plan = scenario::plan_run(loaded);
+  if (!options.quiet) std::fprintf(stderr, "ellc dem: plan: %s\n", scenario::describe_plan(plan).c_str());
+  if (!plan.impossible.empty()) throw InputError(loaded.source, plan.impossible.front() + " (refused even with --force)");
+  if (plan.beyond_limits.empty()) return;
+  if (!options.force)
+    throw InputError(loaded.source, plan.beyond_limits.front() + "; run with --force to start it anyway");
+  for (const auto& reason : plan.beyond_limits)
+    std::fprintf(stderr, "ellc: warning: %s; running anyway (--force)\n", reason.c_str());
+}
+
 void run_dem(const DemOptions& options) {
   prefer_short_spinning();
 #ifdef _OPENMP
   if (options.threads > 0) omp_set_num_threads(options.threads);
 #endif
   scenario::Scenario loaded = scenario::read_scenario(options.scenario_path);
+  check_plan(options, loaded);
   std::optional<long long> count;
   if (!options.seeds.empty())
     count = integer_option(
@@ -379,7 +413,9 @@ const RegisterCommand registration([](CLI::App& root) {
   command->add_option("-j,--threads", options->threads, "OpenMP threads (results do not depend on it)")
       ->check(CLI::PositiveNumber);
   command->add_option("--restart", options->restart_path, "Continue from a checkpoint written by this scenario");
-  command->add_flag("--force", options->force, "Run with a time step above the stability estimate");
+  command->add_flag("--force", options->force,
+                    "Run with a time step above the stability estimate, or beyond the planned-work limits "
+                    "(steps, memory, output; docs/input_limits.md)");
   command->add_flag("--no-plot", options->no_plot, "Skip the PNG (no Python needed)");
   command->add_flag("-q,--quiet", options->quiet, "No progress output");
   command->add_option("--max-steps", options->max_steps, "Stop after this many steps and write a checkpoint")

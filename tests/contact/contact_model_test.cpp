@@ -136,8 +136,15 @@ TEST(ContactParameters, OneVocabularyWithRangesAndImpliedRatioModel) {
   EXPECT_EQ(builder.finish().tangential, TangentialModel::mindlin);  // given explicitly, it wins
 
   EXPECT_NE(builder.set("damping_ratio", 1.0).find("[0, 1)"), std::string::npos);
-  EXPECT_NE(builder.set("friction", -0.1).find(">= 0"), std::string::npos);
-  EXPECT_NE(builder.set("friction", NAN).find(">= 0"), std::string::npos);
+  EXPECT_NE(builder.set("friction", -0.1).find("[0, 10]"), std::string::npos);
+  EXPECT_NE(builder.set("friction", NAN).find("[0, 10]"), std::string::npos);
+  // Bounds from the physics: Mindlin's k_t/k_n < 4/3 for every admissible ν (1e300 once gave a
+  // NaN kinetic energy in LAMMPS), and friction coefficients of real materials.
+  EXPECT_NE(builder.set("tangential_stiffness", 1e300).find("[0, 1.5]"), std::string::npos);
+  EXPECT_NE(builder.set("tangential_stiffness", 1.6).find("[0, 1.5]"), std::string::npos);
+  EXPECT_EQ(builder.set("tangential_stiffness", 1.5), "");
+  EXPECT_NE(builder.set("friction", 11.0).find("[0, 10]"), std::string::npos);
+  EXPECT_EQ(builder.set("friction", 10.0), "");
   EXPECT_NE(builder.set("narrow_phase_final_step", 0.5).find("(0, 0.1]"), std::string::npos);
   EXPECT_EQ(builder.set("normal", "thornton"), "becker_kamlah or hertz");
   EXPECT_NE(builder.set("colour", 1.0), "");
@@ -146,6 +153,10 @@ TEST(ContactParameters, OneVocabularyWithRangesAndImpliedRatioModel) {
   ContactModel bad;
   bad.friction = -1.0;
   EXPECT_NE(validation_error(bad, "[contact]").find("[contact].friction"), std::string::npos);
+  ContactModel stiff;
+  stiff.tangential_stiffness_ratio = 1e300;
+  EXPECT_EQ(validation_error(stiff, "pair_coeff"),
+            "pair_coeff.tangential_stiffness = 1e+300: expected a finite number in [0, 1.5]");  // short form
 }
 
 TEST(ContactHistory, IsNineDoublesInTheDocumentedOrder) {

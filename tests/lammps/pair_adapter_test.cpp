@@ -198,6 +198,10 @@ TEST(PairCoefficients, SharedContactVocabularyAndTheOlderNames) {
             std::string::npos);
   EXPECT_NE(parse_coefficients({"1", "0.2", "3", "damping_ratio", "1.5"}).error.find("damping_ratio = 1.5"),
             std::string::npos);
+  // k_t/k_n = 1e300 once ran and gave a NaN kinetic energy: refused by name.
+  const std::string stiff = parse_coefficients({"1", "0.2", "3", "tangential_stiffness", "1e300"}).error;
+  EXPECT_NE(stiff.find("tangential_stiffness = 1e300"), std::string::npos) << stiff;  // as typed
+  EXPECT_NE(stiff.find("[0, 1.5]"), std::string::npos) << stiff;
   const auto a = parse_coefficients({"1", "0.2", "3"}).coefficients;
   const auto b = parse_coefficients({"1", "0.2", "3", "tangential_model", "ratio"}).coefficients;
   std::string error;

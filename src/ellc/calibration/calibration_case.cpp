@@ -1,9 +1,12 @@
 #include "ellc/calibration/calibration_case.hpp"
 
+#include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <sstream>
 
 #include "ellc/io/input_error.hpp"
@@ -37,9 +40,8 @@ struct CsvContent {
   std::string case_reference;  // from a "# case = ..." comment, if any
 };
 
-CsvContent read_overlap_force_csv(const std::string& path) {
-  std::ifstream file(path);
-  if (!file) throw InputError(path, "cannot open the calibration data file");
+CsvContent parse_overlap_force_csv(std::string_view text_of_file, const std::string& path) {
+  std::istringstream file{std::string(text_of_file)};
   CsvContent content;
   std::string line;
   long line_number = 0;
@@ -63,7 +65,15 @@ CsvContent read_overlap_force_csv(const std::string& path) {
     const std::vector<std::string> fields = split_fields(text);
     if (column_count == 0) {  // the header
       column_count = fields.size();
+      // Column names compared without case: "Force" next to "force" is as ambiguous as a repeat.
+      std::map<std::string, std::size_t> seen;
       for (std::size_t index = 0; index < fields.size(); ++index) {
+        std::string folded = fields[index];
+        for (char& c : folded) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+        if (const auto [at, inserted] = seen.emplace(folded, index); !inserted)
+          throw InputError(where, "header = \"" + text + "\": columns " + std::to_string(at->second + 1) + " (\"" +
+                                      fields[at->second] + "\") and " + std::to_string(index + 1) + " (\"" +
+                                      fields[index] + "\") have the same name: expected each column named once");
         if (fields[index] == "overlap") overlap_column = static_cast<std::ptrdiff_t>(index);
         if (fields[index] == "force") force_column = static_cast<std::ptrdiff_t>(index);
       }
@@ -79,7 +89,8 @@ CsvContent read_overlap_force_csv(const std::string& path) {
       char* end = nullptr;
       const double value = std::strtod(field.c_str(), &end);
       if (field.empty() || end != field.c_str() + field.size() || !std::isfinite(value))
-        throw InputError(where, name, "\"" + field + "\"", "a finite number");
+        throw InputError(where, std::string(name) + " of data row " + std::to_string(content.overlaps.size() + 1),
+                         "\"" + field + "\"", "a finite number");
       return value;
     };
     content.overlaps.push_back(number(overlap_column, "overlap"));
@@ -89,6 +100,39 @@ CsvContent read_overlap_force_csv(const std::string& path) {
   if (content.overlaps.empty()) throw InputError(path, "no data rows after the header");
   return content;
 }
+
+std::string axes_text(const Eigen::Vector3d& axes) {
+  return "[" + format_number(axes.x()) + ", " + format_number(axes.y()) + ", " + format_number(axes.z()) + "]";
+}
+
+// What the geometry says about the data: the constants of the contact are finite (else the bodies
+// or the material are out of the number format's range, named as the user wrote them), every
+// overlap is below a_I + a_J (where the centres meet: the bodies touch at their x tips), and the
+// data spans more than one overlap.
+void check_case_data(const CsvContent& content, const std::string& csv_path, const std::string& case_path,
+                     const BodySpec& body_i, const BodySpec& body_j) {
+  const ContactConstants constants = case_contact_constants(body_i, body_j, HertzMode::hale, LawParameters{});
+  if (const std::string error = validation_error(constants); !error.empty())
+    throw InputError(case_path, "body_I.semi_axes = " + axes_text(body_i.semi_axes) +
+                                    ", body_J.semi_axes = " + axes_text(body_j.semi_axes) +
+                                    " with the [material] given: expected bodies whose contact constants are finite "
+                                    "(docs/input_limits.md), but they give " + error);
+  const double reach = body_i.semi_axes.x() + body_j.semi_axes.x();
+  for (std::size_t row = 0; row < content.overlaps.size(); ++row)
+    if (!(std::abs(content.overlaps[row]) < reach))
+      throw InputError(csv_path, "overlap of data row " + std::to_string(row + 1),
+                       format_number(content.overlaps[row]),
+                       "an overlap below a_I + a_J = " + format_number(reach) +
+                           " µm (body_I.semi_axes[0] + body_J.semi_axes[0] of " + case_path +
+                           "; at that overlap the centres meet)");
+  const auto [low, high] = std::minmax_element(content.overlaps.begin(), content.overlaps.end());
+  if (*low == *high)
+    throw InputError(csv_path, "overlap", "the same " + format_number(*low) + " µm in all " +
+                                              std::to_string(content.overlaps.size()) + " data rows",
+                     "data over a range of overlaps (a force-overlap curve)");
+}
+
+CsvContent read_overlap_force_csv(const std::string& path) { return parse_overlap_force_csv(read_text_file(path), path); }
 
 // "name.csv" and "name.incomplete.csv" → "name".
 std::string case_name_of(const fs::path& csv) {
@@ -121,6 +165,20 @@ CalibrationCase read_calibration_case(const std::string& csv_path, const std::st
   result.name = case_name_of(csv_path);
   std::vector<std::string> warnings;  // aspect-ratio warnings do not matter for a calibration
   read_case_geometry(case_path, result.body_i, result.body_j, warnings);
+  check_case_data(content, csv_path, case_path, result.body_i, result.body_j);
+  result.overlaps = std::move(content.overlaps);
+  result.forces = std::move(content.forces);
+  return result;
+}
+
+CalibrationCase parse_calibration_case(std::string_view csv_text, const std::string& csv_source, const BodySpec& body_i,
+                                       const BodySpec& body_j, const std::string& case_source) {
+  CsvContent content = parse_overlap_force_csv(csv_text, csv_source);
+  check_case_data(content, csv_source, case_source, body_i, body_j);
+  CalibrationCase result;
+  result.name = case_name_of(csv_source);
+  result.body_i = body_i;
+  result.body_j = body_j;
   result.overlaps = std::move(content.overlaps);
   result.forces = std::move(content.forces);
   return result;

@@ -10,6 +10,7 @@
 //   3. the CSV's name with `.csv` (or `.incomplete.csv`) replaced by `.toml`.
 
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "ellc/cases/case_file.hpp"
@@ -32,6 +33,12 @@ struct CalibrationCase {
 // Reads one DATA argument as described above; throws InputError naming the file and line.
 [[nodiscard]] CalibrationCase read_calibration_case(const std::string& data_argument);
 [[nodiscard]] CalibrationCase read_calibration_case(const std::string& csv_path, const std::string& case_path);
+
+// The same from the CSV's text and a geometry already read (`csv_source` and `case_source` name
+// them in messages); the fuzz harness of the table reader uses it.
+[[nodiscard]] CalibrationCase parse_calibration_case(std::string_view csv_text, const std::string& csv_source,
+                                                     const BodySpec& body_i, const BodySpec& body_j,
+                                                     const std::string& case_source);
 
 // The geometry part of a case file: [material], [body_I], [body_J] (+ ignored [protocol], [model]).
 void read_case_geometry(const std::string& case_path, BodySpec& body_i, BodySpec& body_j,

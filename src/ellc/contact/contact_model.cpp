@@ -1,9 +1,12 @@
 #include "ellc/contact/contact_model.hpp"
 
 #include <array>
+#include <charconv>
 #include <cmath>
+#include <tuple>
 #include <utility>
 
+#include "ellc/contact/contact_parameters.hpp"
 #include "ellc/contact/normal_damping.hpp"
 #include "ellc/contact/tangential_spring.hpp"
 #include "ellc/law/contact_law.hpp"
@@ -93,17 +96,23 @@ std::string damping_model_names() { return joined_names(kDampingNames); }
 std::string tangential_model_names() { return joined_names(kTangentialNames); }
 
 std::string validation_error(const ContactModel& model, std::string_view where) {
+  const auto text = [](double value) {  // shortest round-trip form: 1e+300, not 301 digits
+    char buffer[32];
+    return std::string(buffer, std::to_chars(buffer, buffer + sizeof buffer, value).ptr);
+  };
   for (const auto& [name, value] :
        {std::pair{"normal_damping", model.normal_damping}, std::pair{"tangential_damping", model.tangential_damping}})
     if (!(value >= 0.0 && value < 1.0))
-      return std::string(where) + "." + name + " = " + std::to_string(value) + ": expected a damping ratio in [0, 1)";
-  const std::pair<const char*, double> non_negative[] = {{"friction", model.friction},
-                                                         {"tangential_stiffness", model.tangential_stiffness_ratio}};
-  for (const auto& [name, value] : non_negative)
-    if (!(std::isfinite(value) && value >= 0.0))
-      return std::string(where) + "." + name + " = " + std::to_string(value) + ": expected a finite number >= 0";
+      return std::string(where) + "." + name + " = " + text(value) + ": expected a damping ratio in [0, 1)";
+  const std::tuple<const char*, double, double> bounded[] = {
+      {"friction", model.friction, kMaxFriction},
+      {"tangential_stiffness", model.tangential_stiffness_ratio, kMaxTangentialStiffnessRatio}};
+  for (const auto& [name, value, largest] : bounded)
+    if (!(std::isfinite(value) && value >= 0.0 && value <= largest))
+      return std::string(where) + "." + name + " = " + text(value) + ": expected a finite number in [0, " +
+             text(largest) + "]";
   if (!(model.narrow_phase_final_step > 0.0 && model.narrow_phase_final_step <= 0.1))
-    return std::string(where) + ".narrow_phase_final_step = " + std::to_string(model.narrow_phase_final_step) +
+    return std::string(where) + ".narrow_phase_final_step = " + text(model.narrow_phase_final_step) +
            ": expected a Newton step length in (0, 0.1] rad";
   if (std::string error = validation_error(model.law); !error.empty()) return error;
   return {};

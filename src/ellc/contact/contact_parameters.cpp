@@ -46,13 +46,16 @@ std::string ContactModelBuilder::set(std::string_view name, double value) {
     return {};
   }
   if (name == "tangential_stiffness") {
-    if (!(finite && value >= 0.0)) return "a finite number >= 0 (k_t / k_n)";
+    if (!(finite && value >= 0.0 && value <= kMaxTangentialStiffnessRatio))
+      return "a stiffness ratio k_t / k_n in [0, 1.5] (Mindlin's 2(1-nu)/(2-nu) stays below 4/3 for every "
+             "admissible nu; far above it the time step, set by k_n, no longer holds)";
     model_.tangential_stiffness_ratio = value;
     tangential_stiffness_given_ = true;
     return {};
   }
   if (name == "friction") {
-    if (!(finite && value >= 0.0)) return "a finite number >= 0";
+    if (!(finite && value >= 0.0 && value <= kMaxFriction))
+      return "a friction coefficient in [0, 10] (measured ones are below ~2; more only stops sliding)";
     model_.friction = value;
     return {};
   }

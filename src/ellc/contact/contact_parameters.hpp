@@ -41,6 +41,11 @@ inline constexpr std::array<ContactParameterName, 9> kContactParameters{{
     {"narrow_phase_final_step", ParameterKind::number},
 }};
 
+// Upper bounds both engines enforce (docs/input_limits.md): κ = k_t/k_n, Mindlin's
+// 2(1−ν)/(2−ν) < 4/3 for every −1 < ν < 0.5, with some room; and μ.
+inline constexpr double kMaxTangentialStiffnessRatio = 1.5;
+inline constexpr double kMaxFriction = 10.0;
+
 [[nodiscard]] const ContactParameterName* find_contact_parameter(std::string_view name) noexcept;
 
 // Collects named parameters into a model. Each set() returns an empty string when the value was

@@ -1,6 +1,7 @@
 #include "ellc/engine/simulation.hpp"
 
 #include <algorithm>
+#include <charconv>
 #include <chrono>
 #include <cmath>
 #include <limits>
@@ -433,14 +434,25 @@ void Simulation::accumulate() {
 
 void Simulation::report_runaway(std::size_t first_bad) const {
   const auto& p = particles_;
+  const auto text = [](double value) {  // shortest round-trip form: 1e+308, not 309 digits
+    char buffer[32];
+    return std::string(buffer, std::to_chars(buffer, buffer + sizeof buffer, value).ptr);
+  };
   const double limit = settings_.max_speed;
   const double speed = p.velocity[first_bad].norm();
-  const std::string what =
-      std::isfinite(speed) && p.position[first_bad].allFinite()
-          ? "runaway velocity " + std::to_string(speed) + " µm/µs (limit " + std::to_string(limit) + ")"
-          : "a non-finite position or velocity";
+  const double spin = p.angular_velocity[first_bad].norm();
+  const double spin_speed = spin * p.bounding_radius[first_bad];  // the fastest surface point, relative to the centre
+  std::string what;
+  if (!std::isfinite(speed) || !std::isfinite(spin_speed) || !p.position[first_bad].allFinite())
+    what = "a non-finite position, velocity or angular velocity";
+  else if (spin_speed > limit && spin_speed >= speed)
+    what = "a runaway spin: |omega| = " + text(spin) + " rad/µs moves its surface at " + text(spin_speed) +
+           " µm/µs (translational speed " + text(speed) + " µm/µs; limit max_speed = " + text(limit) + " µm/µs)";
+  else
+    what = "a runaway velocity " + text(speed) + " µm/µs (surface speed of its spin " + text(spin_speed) +
+           " µm/µs; limit max_speed = " + text(limit) + " µm/µs)";
   throw RunawayError("particle " + std::to_string(p.id[first_bad]) + " has " + what + " at step " +
-                         std::to_string(step_) + " (t = " + std::to_string(time_) +
+                         std::to_string(step_) + " (t = " + text(time_) +
                          " µs); try a smaller time step or a lower wall speed",
                      p.id[first_bad], step_);
 }

@@ -1,6 +1,7 @@
 #include "ellc/io/table_reader.hpp"
 
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 
@@ -218,12 +219,25 @@ toml::table parse_toml_text(std::string_view text, const std::string& source) {
   }
 }
 
-toml::table parse_toml_file(const std::string& path) {
+std::string read_text_file(const std::string& path) {
+  namespace fs = std::filesystem;
+  std::error_code error;
+  const fs::file_status status = fs::status(path, error);
+  if (!fs::exists(status)) throw InputError(path, "no such file");
+  if (fs::is_directory(status)) throw InputError(path, "is a directory: expected a file");
+  if (!fs::is_regular_file(status)) throw InputError(path, "is not a regular file (a device or a pipe?): expected a file");
+  const std::uintmax_t size = fs::file_size(path, error);
+  if (!error && size > kMaxInputFileBytes)
+    throw InputError(path, "is " + std::to_string(size) + " bytes long: expected an input file of at most " +
+                               std::to_string(kMaxInputFileBytes >> 20) + " MiB");
   std::ifstream file(path, std::ios::binary);
   if (!file) throw InputError(path, "cannot open the file for reading");
   std::stringstream contents;
   contents << file.rdbuf();
-  return parse_toml_text(contents.str(), path);
+  if (file.bad()) throw InputError(path, "cannot read the file");
+  return contents.str();
 }
+
+toml::table parse_toml_file(const std::string& path) { return parse_toml_text(read_text_file(path), path); }
 
 }  // namespace ellc

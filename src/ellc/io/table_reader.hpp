@@ -5,6 +5,7 @@
 
 #include <toml++/toml.h>
 
+#include <cstdint>
 #include <optional>
 #include <set>
 #include <string>
@@ -64,6 +65,11 @@ class TableReader {
   std::string source_;
   std::set<std::string, std::less<>> known_;
 };
+
+// The whole of a text input file. Refuses, naming the path, what is not a readable regular file
+// (a directory, a device, a missing file) and files above kMaxInputFileBytes.
+inline constexpr std::uintmax_t kMaxInputFileBytes = std::uintmax_t{256} << 20;  // 256 MiB
+[[nodiscard]] std::string read_text_file(const std::string& path);
 
 // Parses a TOML file (or text, for tests) into a table; parse errors become InputError with
 // the line and column.

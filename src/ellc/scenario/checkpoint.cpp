@@ -1,7 +1,11 @@
 #include "ellc/scenario/checkpoint.hpp"
 
+#include <array>
+#include <cmath>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 #include <stdexcept>
 
 #include "ellc/engine/binary_io.hpp"
@@ -17,8 +21,88 @@ namespace binary = engine::binary;
 
 namespace {
 
-constexpr std::uint64_t kCheckpointTag = 0x454c4c43'434b5032ULL;  // "ELLCCKP2": ramps and readings (was 1)
-constexpr std::uint64_t kRecordTag = 0x454c4c43'52554e31ULL;      // "ELLCRUN1"
+constexpr char kMagic[8] = {'E', 'L', 'L', 'C', 'C', 'K', 'P', 'T'};
+// Formats 1 and 2 began with these tags and had no checksum (they are refused with that reason).
+constexpr std::uint64_t kUncheckedTags[] = {0x454c4c43'434b5031ULL, 0x454c4c43'434b5032ULL};
+constexpr std::uint64_t kRecordTag = 0x454c4c43'52554e31ULL;  // "ELLCRUN1"
+
+// The header, field by field (little-endian on every platform ellc builds for; no padding).
+struct Header {
+  std::uint32_t version = kCheckpointFormatVersion;
+  std::uint32_t header_size = kCheckpointHeaderSize;
+  std::uint64_t payload_size = 0;
+  std::uint32_t payload_crc = 0;
+  std::uint32_t reserved = 0;
+};
+
+std::string encode_header(const Header& header) {
+  std::string bytes(kMagic, sizeof kMagic);
+  const auto append = [&bytes](const auto& value) {
+    bytes.append(reinterpret_cast<const char*>(&value), sizeof value);
+  };
+  append(header.version);
+  append(header.header_size);
+  append(header.payload_size);
+  append(header.payload_crc);
+  append(header.reserved);
+  return bytes;
+}
+
+template <typename T>
+T field_at(std::string_view bytes, std::size_t offset) {
+  T value{};
+  std::memcpy(&value, bytes.data() + offset, sizeof value);
+  return value;
+}
+
+void check_payload_size(std::uint64_t announced, std::uint64_t held, const std::string& source) {
+  if (announced != held)
+    throw InputError(source, "corrupt checkpoint: its header announces " + std::to_string(announced) +
+                                 " bytes of state, the file holds " + std::to_string(held) +
+                                 " (cut short, or something appended)");
+}
+
+// The checks a checkpoint's header must pass before its payload is read: returns the payload.
+std::string_view checked_payload(std::string_view bytes, const std::string& source) {
+  if (bytes.size() >= 8) {
+    const auto tag = field_at<std::uint64_t>(bytes, 0);
+    for (const std::uint64_t old : kUncheckedTags)
+      if (tag == old)
+        throw InputError(source, "a checkpoint of format " + std::to_string(tag == kUncheckedTags[0] ? 1 : 2) +
+                                     ", written by an older ellc without a checksum: this ellc reads format " +
+                                     std::to_string(kCheckpointFormatVersion) +
+                                     " only; finish that run with the ellc that wrote it, or start afresh");
+  }
+  if (bytes.size() < kCheckpointHeaderSize || std::memcmp(bytes.data(), kMagic, sizeof kMagic) != 0)
+    throw InputError(source, "not an ellc dem checkpoint (it does not start with \"ELLCCKPT\")");
+  Header header;
+  header.version = field_at<std::uint32_t>(bytes, 8);
+  header.header_size = field_at<std::uint32_t>(bytes, 12);
+  header.payload_size = field_at<std::uint64_t>(bytes, 16);
+  header.payload_crc = field_at<std::uint32_t>(bytes, 24);
+  if (header.version != kCheckpointFormatVersion)
+    throw InputError(source, "a checkpoint of format version " + std::to_string(header.version) +
+                                 ": this ellc reads version " + std::to_string(kCheckpointFormatVersion));
+  if (header.header_size != kCheckpointHeaderSize)
+    throw InputError(source, "corrupt checkpoint: its header size field says " + std::to_string(header.header_size) +
+                                 " bytes, expected " + std::to_string(kCheckpointHeaderSize));
+  check_payload_size(header.payload_size, bytes.size() - kCheckpointHeaderSize, source);
+  const std::string_view payload = bytes.substr(kCheckpointHeaderSize);
+  if (const std::uint32_t computed = crc32(payload); computed != header.payload_crc) {
+    char text[96];
+    std::snprintf(text, sizeof text, "stored CRC-32 %08x, computed %08x", header.payload_crc, computed);
+    throw InputError(source, std::string("corrupt checkpoint: the checksum does not match (") + text +
+                                 "): the file was changed or damaged after it was written");
+  }
+  return payload;
+}
+
+// A field read from the payload must be a finite number (protocol state, record, dt estimate).
+void check_finite(double value, const char* what) {
+  if (!std::isfinite(value))
+    throw std::runtime_error(std::string("checkpoint is corrupt: ") + what + " = " + format_number(value) +
+                             " is not finite");
+}
 
 // The protocol state field by field (no padding bytes in the file: equal runs, equal files).
 template <typename Io, typename State>
@@ -93,50 +177,119 @@ std::uint64_t scenario_hash(const std::string& text) noexcept {
   return hash;
 }
 
+std::uint32_t crc32(std::string_view bytes) noexcept {
+  static const std::array<std::uint32_t, 256> table = [] {
+    std::array<std::uint32_t, 256> entries{};
+    for (std::uint32_t n = 0; n < 256; ++n) {
+      std::uint32_t c = n;
+      for (int bit = 0; bit < 8; ++bit) c = (c & 1U) != 0 ? 0xEDB88320U ^ (c >> 1) : c >> 1;
+      entries[n] = c;
+    }
+    return entries;
+  }();
+  std::uint32_t crc = 0xFFFFFFFFU;
+  for (const unsigned char byte : bytes) crc = table[(crc ^ byte) & 0xFFU] ^ (crc >> 8);
+  return crc ^ 0xFFFFFFFFU;
+}
+
 void write_checkpoint(const std::string& path, const Scenario& scenario, const ProtocolState& protocol,
                       double dt_estimate, const Simulation& simulation, const RunRecord& record) {
+  std::ostringstream payload_stream(std::ios::binary);
+  binary::put(payload_stream, scenario_hash(scenario.text));
+  protocol_fields([&payload_stream](const auto& value) { binary::put(payload_stream, value); }, protocol);
+  binary::put(payload_stream, dt_estimate);
+  simulation.write_state(payload_stream);
+  binary::put(payload_stream, kRecordTag);
+  record_fields([&payload_stream](const auto& value) { binary::put(payload_stream, value); }, record);
+  const std::string payload = std::move(payload_stream).str();
+  Header header;
+  header.payload_size = payload.size();
+  header.payload_crc = crc32(payload);
+
   const std::string temporary = path + ".tmp";
   {
     std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
     if (!out) throw std::runtime_error("cannot open " + temporary + " for writing");
-    binary::put(out, kCheckpointTag);
-    binary::put(out, scenario_hash(scenario.text));
-    protocol_fields([&out](const auto& value) { binary::put(out, value); }, protocol);
-    binary::put(out, dt_estimate);
-    simulation.write_state(out);
-    binary::put(out, kRecordTag);
-    record_fields([&out](const auto& value) { binary::put(out, value); }, record);
+    out << encode_header(header) << payload;
+    out.flush();
     if (!out) throw std::runtime_error("writing " + temporary + " failed");
   }
   std::filesystem::rename(temporary, path);
 }
 
-Checkpoint read_checkpoint(const std::string& path, const Scenario& scenario, EngineSettings settings) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(path, "cannot open the checkpoint for reading");
-  std::uint64_t tag = 0, hash = 0;
-  binary::get(in, tag);
-  if (tag != kCheckpointTag) throw InputError(path, "not an ellc dem checkpoint");
-  binary::get(in, hash);
-  if (hash != scenario_hash(scenario.text))
-    throw InputError(path, "--restart", path,
-                     "a checkpoint written by this same scenario file (" + scenario.source +
-                         " has changed since, or is another scenario)");
+Checkpoint parse_checkpoint(std::string_view bytes, const std::string& source, const Scenario& scenario,
+                            EngineSettings settings) {
+  const std::string_view payload = checked_payload(bytes, source);
+  std::istringstream in(std::string(payload), std::ios::binary);
+  std::uint64_t hash = 0;
   Checkpoint checkpoint;
-  protocol_fields([&in](auto& value) { binary::get(in, value); }, checkpoint.protocol);
-  binary::get(in, checkpoint.dt_estimate);
-  settings.dt = 1.0;  // overwritten by the stored state
-  checkpoint.simulation = std::make_unique<Simulation>(settings, ParticleSet{}, std::array<Wall, 2>{});
-  checkpoint.simulation->read_state(in);
-  if (in.peek() != std::char_traits<char>::eof()) {
+  try {
+    binary::get(in, hash);
+    if (hash != scenario_hash(scenario.text))
+      throw InputError(source, "--restart", source,
+                       "a checkpoint written by this same scenario file (" + scenario.source +
+                           " has changed since, or is another scenario)");
+    ProtocolState& protocol = checkpoint.protocol;
+    protocol_fields(
+        [&in](auto& value) {
+          binary::get(in, value);
+          if constexpr (std::is_same_v<std::decay_t<decltype(value)>, double>) check_finite(value, "a protocol time");
+        },
+        protocol);
+    if (static_cast<int>(protocol.phase) > static_cast<int>(Phase::relax))
+      throw std::runtime_error("checkpoint is corrupt: the protocol phase " +
+                               std::to_string(static_cast<int>(protocol.phase)) + " is unknown");
+    binary::get(in, checkpoint.dt_estimate);
+    if (!(checkpoint.dt_estimate > 0.0) || !std::isfinite(checkpoint.dt_estimate))
+      throw std::runtime_error("checkpoint is corrupt: the time-step estimate " +
+                               format_number(checkpoint.dt_estimate) + " is not a finite number > 0");
+    settings.dt = 1.0;  // overwritten by the stored state
+    checkpoint.simulation = std::make_unique<Simulation>(settings, ParticleSet{}, std::array<Wall, 2>{});
+    checkpoint.simulation->read_state(in);
     std::uint64_t record_tag = 0;
     binary::get(in, record_tag);
-    if (record_tag != kRecordTag) throw InputError(path, "the checkpoint's run record is corrupt");
+    if (record_tag != kRecordTag) throw std::runtime_error("checkpoint is corrupt: the run record's tag is missing");
     RunRecord record;
-    record_fields([&in](auto& value) { binary::get(in, value); }, record);
+    record_fields(
+        [&in](auto& value) {
+          binary::get(in, value);
+          if constexpr (std::is_same_v<std::decay_t<decltype(value)>, double>) check_finite(value, "a record entry");
+        },
+        record);
     checkpoint.record = record;
+    if (in.peek() != std::char_traits<char>::eof())
+      throw std::runtime_error("checkpoint is corrupt: bytes left over after the run record");
+  } catch (const InputError&) {
+    throw;
+  } catch (const std::exception& error) {
+    // The checksum matched, so the file is as it was written: a writer of another build, or a
+    // deliberately edited file. The reason is named all the same.
+    throw InputError(source, std::string(error.what()) + "; the checkpoint is refused");
   }
   return checkpoint;
+}
+
+Checkpoint read_checkpoint(const std::string& path, const Scenario& scenario, EngineSettings settings) {
+  std::error_code error;
+  if (std::filesystem::is_directory(path, error))
+    throw InputError(path, "--restart", path, "a checkpoint file, not a directory");
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError(path, "cannot open the checkpoint for reading");
+  const auto size = std::filesystem::file_size(path, error);
+  if (error) throw InputError(path, "cannot tell the checkpoint's size: " + error.message());
+  // The header first: its payload size is checked against the file's length before the payload
+  // is read into memory.
+  std::string bytes(std::min<std::uintmax_t>(size, kCheckpointHeaderSize), '\0');
+  in.read(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+  if (!in) throw InputError(path, "cannot read the checkpoint");
+  if (size >= kCheckpointHeaderSize && std::memcmp(bytes.data(), kMagic, sizeof kMagic) == 0 &&
+      field_at<std::uint32_t>(bytes, 8) == kCheckpointFormatVersion) {
+    check_payload_size(field_at<std::uint64_t>(bytes, 16), size - kCheckpointHeaderSize, path);
+    bytes.resize(size);
+    in.read(bytes.data() + kCheckpointHeaderSize, static_cast<std::streamsize>(size - kCheckpointHeaderSize));
+    if (!in) throw InputError(path, "cannot read the checkpoint");
+  }
+  return parse_checkpoint(bytes, path, scenario, std::move(settings));
 }
 
 }  // namespace ellc::scenario

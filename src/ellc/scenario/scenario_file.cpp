@@ -6,6 +6,7 @@
 #include <fstream>
 #include <limits>
 #include <sstream>
+#include <utility>
 
 #include "ellc/cases/case_file.hpp"
 #include "ellc/contact/contact_parameters.hpp"
@@ -31,6 +32,8 @@ double largest_bounding_radius(const PackingSpec& spec) noexcept {
 }
 
 namespace {
+
+constexpr double kMaxLength = 1e100;  // µm
 
 double positive_or(TableReader& table, std::string_view key, double fallback) {
   if (!table.has(key)) return fallback;
@@ -60,6 +63,8 @@ void read_contact(TableReader& table, ContactSettings& contact) {
   }
   contact.model = builder.finish();
   contact.wall_friction = non_negative_or(table, "wall_friction", contact.wall_friction);
+  if (contact.wall_friction > kMaxFriction)
+    table.fail("wall_friction", contact.wall_friction, "a friction coefficient in [0, 10]");
   table.finish();
 }
 
@@ -97,6 +102,7 @@ void read_walls(TableReader& table, const toml::node* material, bool contact_gav
   }
   if (table.has("friction")) {
     const double friction = table.non_negative("friction");
+    if (friction > kMaxFriction) table.fail("friction", friction, "a friction coefficient in [0, 10]");
     if (contact_gave_friction)
       table.fail("friction", friction,
                  "one friction coefficient for the walls: [walls] friction or (the older name) [contact] "
@@ -111,6 +117,7 @@ void read_packing(TableReader& table, Scenario& scenario) {
   spec.count = static_cast<std::size_t>(table.integer_at_least("count", 1));
   if (spec.count > 50'000'000) table.fail("count", std::to_string(spec.count), "at most 50000000 particles");
   spec.mean_radius = table.positive("mean_radius");
+  if (spec.mean_radius > kMaxLength) table.fail("mean_radius", spec.mean_radius, "a radius in (0, 1e100] µm");
   spec.radius_spread = non_negative_or(table, "radius_spread", 0.0);
   if (spec.radius_spread >= 0.45) table.fail("radius_spread", spec.radius_spread, "a relative spread in [0, 0.45)");
   spec.spheres = table.choice("shape", {"ellipsoid", "sphere"}, "ellipsoid") == "sphere";
@@ -136,8 +143,10 @@ void read_packing(TableReader& table, Scenario& scenario) {
 
 void read_box(TableReader& table, Scenario& scenario) {
   const auto size = table.numbers("size", 2);
+  // Lengths up to 1e100 µm keep squared distances, areas and volumes finite (docs/input_limits.md).
   for (int axis = 0; axis < 2; ++axis)
-    if (size[axis] <= 0.0) table.fail("size[" + std::to_string(axis) + "]", size[axis], "a box length > 0 (µm)");
+    if (!(size[axis] > 0.0 && size[axis] <= kMaxLength))
+      table.fail("size[" + std::to_string(axis) + "]", size[axis], "a box length in (0, 1e100] µm");
   scenario.box = {size[0], size[1]};
   table.finish();
 }
@@ -179,6 +188,9 @@ void read_calendering(TableReader& table, CalenderingSpec& spec) {
   spec.hold_time = non_negative_or(table, "hold_time", spec.hold_time);
   spec.gravity = non_negative_or(table, "gravity", spec.gravity);
   spec.start_gap = non_negative_or(table, "start_gap", spec.start_gap);
+  if (spec.start_gap > kMaxLength) table.fail("start_gap", spec.start_gap, "a gap in [0, 1e100] µm");
+  if (spec.target_thickness && *spec.target_thickness > kMaxLength)
+    table.fail("target_thickness", *spec.target_thickness, "a plate gap in (0, 1e100] µm");
   spec.release_fraction = non_negative_or(table, "release_fraction", spec.release_fraction);
   if (spec.release_fraction >= 1.0) table.fail("release_fraction", spec.release_fraction, "a fraction in [0, 1)");
   spec.ramp_time = non_negative_or(table, "ramp_time", spec.ramp_time);
@@ -227,6 +239,19 @@ void cross_check(const Scenario& scenario) {
                          " µm: twice the reach 2 R_max + skin of the largest particle (packing.mean_radius = " +
                          format_number(spec.mean_radius) + " µm, bounding radius up to " + format_number(largest) +
                          " µm); the particle is too large for the periodic box");
+  // The plate pushes particles at its own speed: faster than the runaway limit it would stop the
+  // run (or, far faster, pass through the layer within a step).
+  const CalenderingSpec& calendering = scenario.calendering;
+  for (const auto& [key, speed] : {std::pair{"speed", calendering.speed}, std::pair{"approach_speed", calendering.approach_speed},
+                                   std::pair{"lift_speed", calendering.lift_speed}})
+    if (speed > scenario.max_speed)
+      throw InputError(scenario.source, std::string("calendering.") + key, format_number(speed),
+                       "a plate speed <= time.max_speed = " + format_number(scenario.max_speed) +
+                           " µm/µs (the runaway limit: the particles the plate pushes would exceed it)");
+  const double particle_volume = 4.0 / 3.0 * 3.141592653589793 * std::pow(largest, 3);
+  if (!std::isfinite(particle_volume * static_cast<double>(spec.count)))
+    throw InputError(scenario.source, "packing.mean_radius", format_number(spec.mean_radius),
+                     "a radius whose particles' total volume stays finite (docs/input_limits.md)");
   if (const auto& target = scenario.calendering.target_thickness) {
     const double solid = static_cast<double>(spec.count) * 4.0 / 3.0 * 3.141592653589793 *
                          std::pow(spec.mean_radius, 3) / (scenario.box.lx * scenario.box.ly);
@@ -284,13 +309,7 @@ Scenario read(const toml::table& root_table, const std::string& source, std::str
 
 }  // namespace
 
-Scenario read_scenario(const std::string& path) {
-  std::ifstream file(path, std::ios::binary);
-  if (!file) throw InputError(path, "cannot open the scenario file for reading");
-  std::stringstream contents;
-  contents << file.rdbuf();
-  return parse_scenario(contents.str(), path);
-}
+Scenario read_scenario(const std::string& path) { return parse_scenario(read_text_file(path), path); }
 
 Scenario parse_scenario(std::string_view toml_text, const std::string& source) {
   return read(parse_toml_text(toml_text, source), source, std::string(toml_text));
