@@ -17,7 +17,7 @@ namespace binary = engine::binary;
 
 namespace {
 
-constexpr std::uint64_t kCheckpointTag = 0x454c4c43'434b5032ULL;  // "ELLCCKP2": ramps and readings (was 1)
+constexpr std::uint64_t kCheckpointTag = 0x454c4c43'434b5033ULL;  // "ELLCCKP3": readings with I (was 2)
 constexpr std::uint64_t kRecordTag = 0x454c4c43'52554e31ULL;      // "ELLCRUN1"
 
 // The protocol state field by field (no padding bytes in the file: equal runs, equal files).
@@ -50,6 +50,7 @@ void protocol_fields(Io&& io, State& state) {
     io(reading->plate_speed);
     io(reading->gap);
     io(reading->pressure);
+    io(reading->inertial_number);
   }
 }
 
