@@ -55,7 +55,7 @@ def reading_limits(runs):
     keys = ["loaded_unbalanced_force_ratio", "released_unbalanced_force_ratio", "loaded_inertial_number",
             "released_inertial_number"]
     worst = [max((float(r.get(k, "nan")) for r in runs), default=float("nan")) for k in keys]
-    return f"{max(worst[:2]):.2g}", f"{max(worst[2:]):.2g}"
+    return f"{max(worst[:2]):.2e}", f"{max(worst[2:]):.2e}"
 
 
 def convergence(out, speeds, seeds, scenario):

@@ -80,7 +80,8 @@ TEST(ReleasedState, ALargerResidualPressureLeavesLessSpringback) {
 }
 
 TEST(ReleasedState, ARelaxationNotReachingEquilibriumNamesTheCriterion) {
-  const std::string text = replace_line(servo_release_text(0.02), "relax_time", "relax_time = 0.5\nmax_relax_time = 0.5");
+  const std::string text = replace_line(replace_line(servo_release_text(0.02), "relax_time", "relax_time = 0.5"),
+                                        "max_relax_time", "max_relax_time = 0.5");
   ScenarioRunner runner(quick_scenario(text), testing::in_memory(512));
   try {
     runner.advance(1'000'000);

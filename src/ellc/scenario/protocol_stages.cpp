@@ -104,12 +104,8 @@ void LoadingProtocol::apply_ramp(Simulation& sim) const {
 }
 
 ProtocolState::Reading LoadingProtocol::reading(const Simulation& sim) const {
-  return {sim.time(),
-          sim.unbalanced_force_ratio(),
-          std::abs(sim.walls()[kTopWall].velocity),
-          sim.gap(),
-          sim.wall_pressure(kTopWall),
-          inertial_number(sim, scales_)};
+  return {sim.time(), sim.unbalanced_force_ratio(), std::abs(sim.walls()[kTopWall].velocity),
+          sim.gap(),  sim.wall_pressure(kTopWall),  inertial_number(sim, scales_)};
 }
 
 double LoadingProtocol::release_pressure() const noexcept {
@@ -125,7 +121,8 @@ bool LoadingProtocol::servo_release_step(Simulation& sim, double pressure) const
   const bool within = std::abs(pressure - target) <= spec.release_tolerance * target;
   const double envelope = std::abs(sim.walls()[kTopWall].velocity);  // the ramp's speed, set just before
   const double servo =
-      within ? 0.0 : spec.lift_speed * std::clamp(spec.servo_gain * (pressure - target) / state_.loaded.pressure, -1.0, 1.0);
+      within ? 0.0
+             : spec.lift_speed * std::clamp(spec.servo_gain * (pressure - target) / state_.loaded.pressure, -1.0, 1.0);
   sim.set_wall_velocity(kTopWall, state_.phase == Phase::unload ? std::clamp(servo, -envelope, envelope) : servo);
   return within;
 }
@@ -252,9 +249,9 @@ std::optional<Phase> LoadingProtocol::after_step(Simulation& sim) {
     case Phase::unload:
       if (spec.servo_release) {
         if (!(state_.loaded.pressure > 0.0))
-          throw ProtocolError("calendering.release = \"servo\" needs a pressure to unload from: the top plate carried " +
-                              format_number(state_.loaded.pressure) +
-                              " MPa at the end of the hold; use release = \"contact_lost\"");
+          throw ProtocolError(
+              "calendering.release = \"servo\" needs a pressure to unload from: the top plate carried " +
+              format_number(state_.loaded.pressure) + " MPa at the end of the hold; use release = \"contact_lost\"");
         // Down to p_r (from above; the first time the pressure is within the tolerance or below).
         if (servo_release_step(sim, pressure) || pressure < release_pressure()) return Phase::relax;
         break;
@@ -269,8 +266,8 @@ std::optional<Phase> LoadingProtocol::after_step(Simulation& sim) {
       const double ratio = sim.unbalanced_force_ratio();
       if (ratio < spec.equilibrium_ratio && at_rest_pressure) return Phase::done;
       const double limit = spec.max_relax_time > 0.0 ? spec.max_relax_time
-                           : spec.servo_release       ? 5.0 * std::max(spec.relax_time, spec.hold_time)
-                                                      : 5.0 * spec.relax_time;
+                           : spec.servo_release      ? 5.0 * std::max(spec.relax_time, spec.hold_time)
+                                                     : 5.0 * spec.relax_time;
       if (sim.time() - state_.relax_start_time >= limit)
         throw ProtocolError("the released state did not reach equilibrium: after " +
                             format_number(sim.time() - state_.relax_start_time) +

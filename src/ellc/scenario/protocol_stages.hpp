@@ -60,7 +60,7 @@ struct ProtocolState {
     double unbalanced_force_ratio = 1.0;
     double plate_speed = 0.0;  // µm/µs, |v| of the top plate
     double gap = 0.0;
-    double pressure = 0.0;  // MPa, top plate
+    double pressure = 0.0;         // MPa, top plate
     double inertial_number = 0.0;  // diagnostics.hpp, of the plate's speed at the reading
   };
   Reading loaded;

@@ -177,8 +177,8 @@ std::vector<std::string> summary_warnings(const RunSummary& s) {
   const auto not_static = [&warnings](const char* state, double inertial, double ratio) {
     if (inertial <= kQuasiStaticLimit && ratio <= kQuasiStaticLimit) return;
     warnings.push_back(std::string("the ") + state + " state was read at I = " + format_number(inertial) +
-                       " and an unbalanced-force ratio of " + format_number(ratio) + ", not both <= " +
-                       format_number(kQuasiStaticLimit) + ": its figures are not a static reading");
+                       " and an unbalanced-force ratio of " + format_number(ratio) +
+                       ", not both <= " + format_number(kQuasiStaticLimit) + ": its figures are not a static reading");
   };
   if (s.loaded_state_recorded) not_static("loaded", s.loaded_inertial_number, s.loaded_unbalanced_force_ratio);
   if (s.finished && s.loaded_state_recorded)

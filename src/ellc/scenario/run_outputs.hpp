@@ -69,8 +69,8 @@ struct RunSummary {
   double loaded_plate_speed = 0.0;  // µm/µs
   double released_time = 0.0;       // µs
   double released_unbalanced_force_ratio = 0.0;
-  double released_pressure = 0.0;     // MPa, top plate at the released reading (release = servo: p_r)
-  double released_plate_speed = 0.0;  // µm/µs
+  double released_pressure = 0.0;       // MPa, top plate at the released reading (release = servo: p_r)
+  double released_plate_speed = 0.0;    // µm/µs
   double loaded_inertial_number = 0.0;  // I of the plate at each reading (diagnostics.hpp)
   double released_inertial_number = 0.0;
   // The energy balance at the end of the run (diagnostics.hpp), pJ.
