@@ -134,6 +134,7 @@ void protocol_fields(Io&& io, State& state) {
     io(reading->plate_speed);
     io(reading->gap);
     io(reading->pressure);
+    io(reading->inertial_number);
   }
 }
 

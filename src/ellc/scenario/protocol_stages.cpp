@@ -56,7 +56,8 @@ LoadingProtocol::LoadingProtocol(const Scenario& scenario)
     : settle_(scenario.settle),
       calendering_(scenario.calendering),
       box_(scenario.box),
-      mean_radius_(scenario.packing.mean_radius) {}
+      mean_radius_(scenario.packing.mean_radius),
+      scales_(diagnostic_scales(scenario)) {}
 
 std::array<Wall, 2> LoadingProtocol::start(EngineSettings& settings, const ParticleSet& particles) {
   solid_volume_ = particles.total_volume();
@@ -103,8 +104,27 @@ void LoadingProtocol::apply_ramp(Simulation& sim) const {
 }
 
 ProtocolState::Reading LoadingProtocol::reading(const Simulation& sim) const {
-  return {sim.time(), sim.unbalanced_force_ratio(), std::abs(sim.walls()[kTopWall].velocity), sim.gap(),
-          sim.wall_pressure(kTopWall)};
+  return {sim.time(), sim.unbalanced_force_ratio(), std::abs(sim.walls()[kTopWall].velocity),
+          sim.gap(),  sim.wall_pressure(kTopWall),  inertial_number(sim, scales_)};
+}
+
+double LoadingProtocol::release_pressure() const noexcept {
+  return calendering_.release_pressure_fraction * state_.loaded.pressure;
+}
+
+// The plate follows the pressure down to p_r in proportion to the error relative to the held
+// pressure (not to p_r: the same loop gain as the hold's servo, which the layer's thickness mode
+// can follow), never faster than the lift's ramp allows, and stands still within the tolerance.
+bool LoadingProtocol::servo_release_step(Simulation& sim, double pressure) const {
+  const CalenderingSpec& spec = calendering_;
+  const double target = release_pressure();
+  const bool within = std::abs(pressure - target) <= spec.release_tolerance * target;
+  const double envelope = std::abs(sim.walls()[kTopWall].velocity);  // the ramp's speed, set just before
+  const double servo =
+      within ? 0.0
+             : spec.lift_speed * std::clamp(spec.servo_gain * (pressure - target) / state_.loaded.pressure, -1.0, 1.0);
+  sim.set_wall_velocity(kTopWall, state_.phase == Phase::unload ? std::clamp(servo, -envelope, envelope) : servo);
+  return within;
 }
 
 void LoadingProtocol::enter(Simulation& sim, Phase phase) {
@@ -137,7 +157,11 @@ void LoadingProtocol::enter(Simulation& sim, Phase phase) {
       set_plate_velocity(sim, spec.lift_speed);
       break;
     case Phase::relax:
-      set_plate_velocity(sim, 0.0);
+      // The servo goes on holding p_r; otherwise the plate, away from the layer, stops.
+      if (spec.servo_release)
+        state_.ramp_from = state_.ramp_to = spec.lift_speed;  // the lift's ramp is over: the servo alone
+      else
+        set_plate_velocity(sim, 0.0);
       sim.settings().drag_rate = spec.rest_drag_rate;
       state_.relax_start_time = sim.time();
       break;
@@ -146,10 +170,12 @@ void LoadingProtocol::enter(Simulation& sim, Phase phase) {
       sim.settings().drag_rate = 0.0;
       sim.set_wall_velocity(kTopWall, 0.0);
       state_.ramp_from = state_.ramp_to = 0.0;
-      // The released thickness: after a relaxation the plate has left the layer, so it is the top of
-      // the layer's surface; without one, the plate gap when it lost contact.
-      state_.final_gap =
-          state_.relax_start_time > 0.0 ? layer_top(sim.particles()) - sim.walls()[kBottomWall].position : sim.gap();
+      // The released thickness: under the servo's residual pressure, the plate gap; after a
+      // relaxation away from the layer, the top of the layer's surface; without one, the plate gap
+      // when it lost contact.
+      state_.final_gap = !spec.servo_release && state_.relax_start_time > 0.0
+                             ? layer_top(sim.particles()) - sim.walls()[kBottomWall].position
+                             : sim.gap();
       state_.final_porosity = sim.porosity();
       state_.done_step = sim.step_count();
       break;
@@ -234,20 +260,37 @@ std::optional<Phase> LoadingProtocol::after_step(Simulation& sim) {
       break;
     }
     case Phase::unload:
+      if (spec.servo_release) {
+        if (!(state_.loaded.pressure > 0.0))
+          throw ProtocolError(
+              "calendering.release = \"servo\" needs a pressure to unload from: the top plate carried " +
+              format_number(state_.loaded.pressure) + " MPa at the end of the hold; use release = \"contact_lost\"");
+        // Down to p_r (from above; the first time the pressure is within the tolerance or below).
+        if (servo_release_step(sim, pressure) || pressure < release_pressure()) return Phase::relax;
+        break;
+      }
       if (sim.wall_contact_count(kTopWall) == 0 || pressure <= spec.release_fraction * state_.max_pressure)
         return spec.relax_time > 0.0 ? Phase::relax : Phase::done;
       break;
     case Phase::relax: {
+      // Under the servo, the released state is read with the plate standing still at p_r.
+      const bool at_rest_pressure = !spec.servo_release || servo_release_step(sim, pressure);
       if (sim.time() - state_.relax_start_time < spec.relax_time) break;
       const double ratio = sim.unbalanced_force_ratio();
-      if (ratio < spec.equilibrium_ratio) return Phase::done;
-      const double limit = spec.max_relax_time > 0.0 ? spec.max_relax_time : 5.0 * spec.relax_time;
+      if (ratio < spec.equilibrium_ratio && at_rest_pressure) return Phase::done;
+      const double limit = spec.max_relax_time > 0.0 ? spec.max_relax_time
+                           : spec.servo_release      ? 5.0 * std::max(spec.relax_time, spec.hold_time)
+                                                     : 5.0 * spec.relax_time;
       if (sim.time() - state_.relax_start_time >= limit)
         throw ProtocolError("the released state did not reach equilibrium: after " +
                             format_number(sim.time() - state_.relax_start_time) +
                             " µs of relaxation (calendering.max_relax_time) the unbalanced-force ratio is " +
                             format_number(ratio) +
-                            ", above calendering.equilibrium_ratio = " + format_number(spec.equilibrium_ratio));
+                            ", above calendering.equilibrium_ratio = " + format_number(spec.equilibrium_ratio) +
+                            (at_rest_pressure ? std::string()
+                                              : "; the plate pressure " + format_number(pressure) +
+                                                    " MPa is not within calendering.release_tolerance of p_r = " +
+                                                    format_number(release_pressure()) + " MPa"));
       break;
     }
     case Phase::done: break;

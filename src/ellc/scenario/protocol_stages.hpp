@@ -5,8 +5,11 @@
 //           approach_pressure), then calendering at `speed` to the target thickness or pressure
 //   hold    plate at rest (or servo-held at the target pressure) for hold_time, then until the
 //           unbalanced-force ratio is below equilibrium_ratio: the loaded state is read there
-//   unload  plate up at lift_speed until it loses contact
-//   relax   (relax_time > 0) plate at rest, away, until the layer is at rest: the released state
+//   unload  plate up at lift_speed until it loses contact, or (release = servo) until its
+//           pressure has come down to the residual p_r = release_pressure_fraction × held pressure
+//   relax   (relax_time > 0) plate at rest, away, until the layer is at rest: the released state;
+//           or (release = servo) the servo holds p_r until the unbalanced-force ratio is below
+//           equilibrium_ratio: the released state is read there, the plate still on the layer
 //   done    plate at rest; the released thickness is recorded
 // Plate velocity changes are half-cosine ramps over ramp_time.
 // It only moves the walls and switches gravity and drag; it writes nothing (run_outputs.hpp).
@@ -18,6 +21,7 @@
 #include <stdexcept>
 
 #include "ellc/engine/simulation.hpp"
+#include "ellc/scenario/diagnostics.hpp"
 #include "ellc/scenario/scenario.hpp"
 
 namespace ellc::scenario {
@@ -56,7 +60,8 @@ struct ProtocolState {
     double unbalanced_force_ratio = 1.0;
     double plate_speed = 0.0;  // µm/µs, |v| of the top plate
     double gap = 0.0;
-    double pressure = 0.0;  // MPa, top plate
+    double pressure = 0.0;         // MPa, top plate
+    double inertial_number = 0.0;  // diagnostics.hpp, of the plate's speed at the reading
   };
   Reading loaded;
   Reading released;
@@ -101,11 +106,16 @@ class LoadingProtocol {
   double mean_radius_ = 0.0;   // packing's mean r̂, µm
   double solid_volume_ = 0.0;  // µm³: the load stops at the thickness of the solid
   double total_mass_ = 0.0;    // ng: settling ends on the rms speed sqrt(2 E_kin / M)
+  DiagnosticScales scales_;    // for the inertial number of the readings
   ProtocolState state_;
 
   void set_plate_velocity(engine::Simulation& sim, double velocity);  // starts a ramp to it
   void apply_ramp(engine::Simulation& sim) const;
   [[nodiscard]] ProtocolState::Reading reading(const engine::Simulation& sim) const;
+  // release = servo: the residual pressure p_r (MPa), and the plate speed towards it, bounded by
+  // the lift's ramp; true when the pressure is within release_tolerance of p_r.
+  [[nodiscard]] double release_pressure() const noexcept;
+  bool servo_release_step(engine::Simulation& sim, double pressure) const;
 };
 
 }  // namespace ellc::scenario

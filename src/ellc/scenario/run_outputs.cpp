@@ -155,6 +155,10 @@ RunSummary summarize(const Simulation& sim, const ProtocolState& protocol, doubl
   summary.loaded_plate_speed = protocol.loaded.plate_speed;
   summary.released_time = protocol.released.time;
   summary.released_unbalanced_force_ratio = protocol.released.unbalanced_force_ratio;
+  summary.released_pressure = protocol.released.pressure;
+  summary.released_plate_speed = protocol.released.plate_speed;
+  summary.loaded_inertial_number = protocol.loaded.inertial_number;
+  summary.released_inertial_number = protocol.released.inertial_number;
   const EnergyBalance energy = ledger.balance(sim);
   summary.plate_work = energy.plate_work();
   summary.gravity_work = energy.gravity_work;
@@ -170,6 +174,15 @@ RunSummary summarize(const Simulation& sim, const ProtocolState& protocol, doubl
 
 std::vector<std::string> summary_warnings(const RunSummary& s) {
   std::vector<std::string> warnings;
+  const auto not_static = [&warnings](const char* state, double inertial, double ratio) {
+    if (inertial <= kQuasiStaticLimit && ratio <= kQuasiStaticLimit) return;
+    warnings.push_back(std::string("the ") + state + " state was read at I = " + format_number(inertial) +
+                       " and an unbalanced-force ratio of " + format_number(ratio) +
+                       ", not both <= " + format_number(kQuasiStaticLimit) + ": its figures are not a static reading");
+  };
+  if (s.loaded_state_recorded) not_static("loaded", s.loaded_inertial_number, s.loaded_unbalanced_force_ratio);
+  if (s.finished && s.loaded_state_recorded)
+    not_static("released", s.released_inertial_number, s.released_unbalanced_force_ratio);
   if (!s.loaded_state_recorded) return warnings;
   const engine::ValidityReport& v = s.loaded_validity;
   const auto percent = [](double share) {
@@ -209,7 +222,11 @@ void write_summary_lines(std::ostream& out, const std::string& scenario_source, 
       << "\nenergy_residual_pJ = " << s.energy_residual << "\nenergy_residual_fraction = " << s.energy_residual_fraction
       << "\nheld_pressure_MPa = " << s.held_pressure << "\nloaded_time_us = " << s.loaded_time
       << "\nloaded_plate_speed_um_per_us = " << s.loaded_plate_speed << "\nreleased_time_us = " << s.released_time
-      << "\nreleased_unbalanced_force_ratio = " << s.released_unbalanced_force_ratio << "\n";
+      << "\nreleased_unbalanced_force_ratio = " << s.released_unbalanced_force_ratio
+      << "\nreleased_pressure_MPa = " << s.released_pressure
+      << "\nreleased_plate_speed_um_per_us = " << s.released_plate_speed
+      << "\nloaded_inertial_number = " << s.loaded_inertial_number
+      << "\nreleased_inertial_number = " << s.released_inertial_number << "\n";
   const engine::ValidityReport& v = s.loaded_validity;
   const ValidityShares& share = s.loaded_validity_shares;
   out << "# the loaded state (end of the hold); validity: c_c at delta_* (eq. 9) over r^ = the mean radius of the\n"

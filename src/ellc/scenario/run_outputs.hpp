@@ -69,6 +69,10 @@ struct RunSummary {
   double loaded_plate_speed = 0.0;  // µm/µs
   double released_time = 0.0;       // µs
   double released_unbalanced_force_ratio = 0.0;
+  double released_pressure = 0.0;       // MPa, top plate at the released reading (release = servo: p_r)
+  double released_plate_speed = 0.0;    // µm/µs
+  double loaded_inertial_number = 0.0;  // I of the plate at each reading (diagnostics.hpp)
+  double released_inertial_number = 0.0;
   // The energy balance at the end of the run (diagnostics.hpp), pJ.
   double plate_work = 0.0;  // work of both plates
   double gravity_work = 0.0;
@@ -88,7 +92,9 @@ struct RunSummary {
                                    const EnergyLedger& ledger, const LoadedState& loaded);
 // Warnings a reader of the results must see (the CLI prints them to stderr): more than half of
 // the pair force, or of the force on the walls, at the loaded state rests on contacts beyond
-// c_c/r̂ = 0.16.
+// c_c/r̂ = 0.16; a loaded or released state read above I = 10⁻³ or an unbalanced-force ratio of
+// 10⁻³ (kQuasiStaticLimit: not a static reading).
+inline constexpr double kQuasiStaticLimit = 1e-3;
 [[nodiscard]] std::vector<std::string> summary_warnings(const RunSummary& summary);
 // summary.txt: `key = value` lines under a comment naming the scenario file.
 void write_summary_file(const std::string& path, const std::string& scenario_source, const RunSummary& summary);

@@ -62,6 +62,15 @@ struct CalenderingSpec {
   // kinetic energy a static reading must not have, without touching the loading (0: none).
   double rest_drag_rate = 0.0;
   double max_relax_time = 0.0;  // µs, 0 → 5 × relax_time
+  // Release: `contact_lost` reads the released state when the plate has lost contact (after
+  // relax_time, if given: only with gravity does a free layer come to rest); `servo` unloads the
+  // plate by servo to the residual pressure p_r = release_pressure_fraction × the held pressure,
+  // holds p_r (within release_tolerance of it), and reads the released state there, at
+  // equilibrium, as an oedometer's unloading to a seating load does. The servo's plate speed is
+  // lift_speed · clamp(servo_gain (p − p_r)/p_held, −1, 1), bounded by the lift's ramp.
+  bool servo_release = false;
+  double release_pressure_fraction = 0.02;
+  double release_tolerance = 0.05;  // relative to p_r
 };
 
 struct OutputSpec {

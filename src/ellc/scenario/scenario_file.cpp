@@ -215,6 +215,14 @@ void read_calendering(TableReader& table, CalenderingSpec& spec) {
   if (spec.max_relax_time > 0.0 && spec.max_relax_time < spec.relax_time)
     table.fail("max_relax_time", spec.max_relax_time,
                "a time >= relax_time = " + format_number(spec.relax_time) + " µs");
+  spec.servo_release = table.choice("release", {"contact_lost", "servo"}, "contact_lost") == "servo";
+  spec.release_pressure_fraction = positive_or(table, "release_pressure_fraction", spec.release_pressure_fraction);
+  if (spec.release_pressure_fraction >= 0.5)
+    table.fail("release_pressure_fraction", spec.release_pressure_fraction,
+               "a fraction in (0, 0.5) of the held pressure: the residual pressure the released state is read at");
+  spec.release_tolerance = positive_or(table, "release_tolerance", spec.release_tolerance);
+  if (spec.release_tolerance >= 0.5)
+    table.fail("release_tolerance", spec.release_tolerance, "a relative pressure error in (0, 0.5)");
   table.finish();
 }
 
