@@ -6,6 +6,10 @@
   restart  a run split by write_restart/read_restart reproduces the same split without files
   contacts compute pair/local (Pair::single) and compute ellipsoid/bk/contacts report the same
            contacts, and their forces add up to the pair style's virial
+  export   `ellc export-lammps` of a scenario: the data file brings `ellc dem` back to the same run
+           ([packing] file), and lmp_ellc runs the exported protocol with the engine's columns
+  engines  the exported scenario in LAMMPS (-np 1 and 2) agrees with `ellc dem` on the same packing
+           within the spread of the built-in engine over packing seeds (measured in the test)
   wall     one ellipsoid pressed on a plane of fix wall/ellipsoid/bk gives `ellc geometry`'s wall
            force, for random orientations, both planes and wall materials
 """
@@ -285,6 +289,143 @@ def check_wall(args):
           f"(tolerance {args.tolerance:g}; ellc geometry prints 10 digits)")
 
 
+ENGINE_COLUMNS = ["step", "time", "phase", "plate_position", "thickness", "plate_pressure", "bottom_pressure",
+                  "porosity", "coordination_number"]
+
+
+def read_series(path):
+    with open(path) as handle:
+        return list(csv.DictReader(handle))
+
+
+def scenario_with(text, **packing):
+    """The scenario text with its [packing] table replaced by the given keys."""
+    lines, out, skipping = text.splitlines(), [], False
+    for line in lines:
+        if line.strip().startswith("["):
+            skipping = line.strip() == "[packing]"
+            if skipping:
+                out.append("[packing]")
+                out.extend(f"{key} = {value}" for key, value in packing.items())
+                continue
+        if not skipping:
+            out.append(line)
+    return "\n".join(out) + "\n"
+
+
+def packing_value(text, key):
+    inside = False
+    for line in text.splitlines():
+        if line.strip().startswith("["):
+            inside = line.strip() == "[packing]"
+        elif inside and line.split("=")[0].strip() == key:
+            return line.split("=", 1)[1].split("#")[0].strip()
+    sys.exit(f"no [packing] {key} in the scenario")
+
+
+def run_lammps(args, directory, np):
+    launcher = [args.mpirun, *[flag for flag in args.mpirun_flag if flag], "-np", str(np)] if np > 1 else []
+    run([*launcher, args.lmp, "-in", "in.scenario", "-log", "none"], directory)
+    return read_series(os.path.join(directory, "timeseries.csv"))
+
+
+def check_export(args):
+    with open(args.scenario) as handle:
+        text = handle.read()
+    with tempfile.TemporaryDirectory() as work:
+        exported = os.path.join(work, "exported")
+        run([args.ellc, "export-lammps", args.scenario, "-o", exported], work)
+        # The data file brings `ellc dem` back to the generated packing, bit for bit.
+        imported = os.path.join(work, "imported.toml")
+        with open(imported, "w") as handle:
+            handle.write(scenario_with(text, file='"exported/packing.data"', density=packing_value(text, "density")))
+        run([args.ellc, "dem", args.scenario, "-o", os.path.join(work, "generated"), "--no-plot", "-q"], work)
+        run([args.ellc, "dem", imported, "-o", os.path.join(work, "from_file"), "--no-plot", "-q"], work)
+        # An imported packing's r̂ is its measured mean, not the generator's nominal one. Two things
+        # use it: where the plate waits before the load (the settle row of a scenario without
+        # settling) and the inertial number's length scale. Everything else must be identical.
+        def physical(path):
+            return [{key: value for key, value in row.items() if key != "inertial_number"}
+                    for row in read_series(path) if row["phase"] != "settle"]
+        generated = physical(os.path.join(work, "generated", "timeseries.csv"))
+        from_file = physical(os.path.join(work, "from_file", "timeseries.csv"))
+        if generated != from_file:
+            first = next(k for k, (a, b) in enumerate(zip(generated, from_file)) if a != b) if len(generated) == len(
+                from_file) else min(len(generated), len(from_file))
+            sys.exit(f"ellc dem from the exported data file differs from the generated packing's run at row {first}")
+        # The exported input runs in LAMMPS and writes the engine's columns through every phase.
+        series = run_lammps(args, exported, 1)
+    if list(series[0].keys()) != ENGINE_COLUMNS:
+        sys.exit(f"timeseries.csv columns {list(series[0].keys())}, expected {ENGINE_COLUMNS}")
+    engine_header = list(generated[0].keys())
+    missing = [name for name in ENGINE_COLUMNS if name not in engine_header]
+    if missing:
+        sys.exit(f"the built-in engine's timeseries.csv has no column {missing}")
+    phases = []
+    for row in series:
+        if not phases or phases[-1] != row["phase"]:
+            phases.append(row["phase"])
+    if phases != ["load", "hold", "unload", "done"]:
+        sys.exit(f"phases {phases}, expected load, hold, unload, done")
+    target = float(args.target)
+    loaded = max(float(row["plate_pressure"]) for row in series if row["phase"] == "load")
+    if loaded < target:
+        sys.exit(f"the load ended at {loaded} MPa, below the target {target} MPa")
+    print(f"ellc dem from the exported packing repeats the generated run ({len(generated)} rows, identical); "
+          f"lmp_ellc ran load, hold, unload ({len(series)} rows, peak load pressure {loaded:.4g} MPa)")
+
+
+def hold_start(series):
+    """The first row of the hold: where the load reached its target."""
+    return next(row for row in series if row["phase"] == "hold")
+
+
+def hold_rows(series):
+    """The rows where the load reached its target (first of the hold) and where the hold ended."""
+    hold = [row for row in series if row["phase"] == "hold"]
+    if not hold:
+        sys.exit("the run has no hold phase")
+    return {"end of load": hold[0], "end of hold": hold[-1]}
+
+
+def check_engines(args):
+    import statistics
+    with open(args.scenario) as handle:
+        text = handle.read()
+    seed = int(packing_value(text, "seed"))
+    quantities = ("porosity", "coordination_number")
+    readings = [(when, name) for when in ("end of load", "end of hold") for name in quantities]
+    with tempfile.TemporaryDirectory() as work:
+        # The chaotic spread: the built-in engine over other packing seeds, the scenario otherwise the same.
+        samples = {reading: [] for reading in readings}
+        for other in range(seed + 1, seed + 1 + args.seeds):
+            path = os.path.join(work, f"seed{other}.toml")
+            with open(path, "w") as handle:
+                handle.write(text.replace(f"seed = {seed}", f"seed = {other}"))
+            run([args.ellc, "dem", path, "-o", os.path.join(work, f"dem{other}"), "--no-plot", "-q"], work)
+            rows = hold_rows(read_series(os.path.join(work, f"dem{other}", "timeseries.csv")))
+            for when, name in readings:
+                samples[(when, name)].append(float(rows[when][name]))
+        spread = {reading: statistics.stdev(values) for reading, values in samples.items()}
+        run([args.ellc, "dem", args.scenario, "-o", os.path.join(work, "dem"), "--no-plot", "-q"], work)
+        builtin = hold_rows(read_series(os.path.join(work, "dem", "timeseries.csv")))
+        run([args.ellc, "export-lammps", args.scenario, "-o", os.path.join(work, "lammps")], work)
+        worst = 0.0
+        for np in (1, 2):
+            lammps = hold_rows(run_lammps(args, os.path.join(work, "lammps"), np))
+            for when, name in readings:
+                a, b = float(builtin[when][name]), float(lammps[when][name])
+                ratio = abs(a - b) / spread[(when, name)]
+                worst = max(worst, ratio)
+                print(f"np {np}: {name} at the {when}: ellc dem {a:.6g}, LAMMPS {b:.6g}; difference {abs(a - b):.3g}"
+                      f" = {ratio:.3g} x the seed spread {spread[(when, name)]:.3g} (sd over {args.seeds} seeds)")
+                if ratio > args.tolerance:
+                    sys.exit(f"np {np}: {name} at the {when} differs by {ratio:.3g} seed spreads "
+                             f"(tolerance {args.tolerance})")
+    print(f"LAMMPS (np 1, 2) and ellc dem agree on the same packing; worst difference {worst:.3g} seed spreads "
+          f"(tolerance {args.tolerance})")
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     sub = parser.add_subparsers(dest="check", required=True)
@@ -328,8 +469,20 @@ def main():
     contacts.add_argument("--mpirun", default="")
     contacts.add_argument("--mpirun-flag", action="append", default=[])
     contacts.add_argument("--np", type=int, default=1)
+    for name in ("export", "engines"):
+        command = sub.add_parser(name)
+        command.add_argument("--ellc", required=True)
+        command.add_argument("--lmp", required=True)
+        command.add_argument("--scenario", required=True)
+        command.add_argument("--mpirun", default="")
+        command.add_argument("--mpirun-flag", action="append", default=[])
+        if name == "export":
+            command.add_argument("--target", required=True, help="the scenario's target pressure, MPa")
+        else:
+            command.add_argument("--seeds", type=int, default=6)
+            command.add_argument("--tolerance", type=float, default=2.0, help="in seed spreads (sd)")
     args = parser.parse_args()
-    {"contacts": check_contacts, "curve": check_curve, "mpi": check_mpi, "restart": check_restart, "wall": check_wall}[args.check](args)
+    {"export": check_export, "engines": check_engines, "contacts": check_contacts, "curve": check_curve, "mpi": check_mpi, "restart": check_restart, "wall": check_wall}[args.check](args)
 
 
 if __name__ == "__main__":
