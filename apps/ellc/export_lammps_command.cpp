@@ -48,10 +48,10 @@ std::string ramp_expression(double v0, double v1, double ramp) {
   const std::string tau = "(time-v_ts)";
   if (ramp <= 0.0 || v0 == v1) return "v_zs+(" + number(v1) + ")*" + tau;
   // min(τ, ramp) with LAMMPS's comparison operators (its min() is a reduction over a vector).
-  const std::string s = "((" + tau + "<" + number(ramp) + ")*" + tau + "+(" + tau + ">=" + number(ramp) + ")*" +
-                        number(ramp) + ")";
-  return "v_zs+(" + number(v0) + ")*" + tau + "+(" + number(v1 - v0) + ")*(" + s + "/2-" +
-         number(ramp / (2.0 * M_PI)) + "*sin(PI*" + s + "/" + number(ramp) + ")+" + tau + "-" + s + ")";
+  const std::string s =
+      "((" + tau + "<" + number(ramp) + ")*" + tau + "+(" + tau + ">=" + number(ramp) + ")*" + number(ramp) + ")";
+  return "v_zs+(" + number(v0) + ")*" + tau + "+(" + number(v1 - v0) + ")*(" + s + "/2-" + number(ramp / (2.0 * M_PI)) +
+         "*sin(PI*" + s + "/" + number(ramp) + ")+" + tau + "-" + s + ")";
 }
 
 void write_data_file(const std::string& path, const scenario::Scenario& scenario, const engine::ParticleSet& particles,
@@ -59,8 +59,8 @@ void write_data_file(const std::string& path, const scenario::Scenario& scenario
   std::ofstream out(path);
   if (!out) throw std::runtime_error("cannot write " + path);
   out.precision(17);
-  out << "LAMMPS data file: the packing of " << std::filesystem::path(scenario.source).filename().string() << " (seed " << scenario.packing.seed
-      << "), written by ellc export-lammps; units micro\n\n";
+  out << "LAMMPS data file: the packing of " << std::filesystem::path(scenario.source).filename().string() << " (seed "
+      << scenario.packing.seed << "), written by ellc export-lammps; units micro\n\n";
   out << particles.size() << " atoms\n1 atom types\n" << particles.size() << " ellipsoids\n\n";
   out << "0 " << scenario.box.lx << " xlo xhi\n0 " << scenario.box.ly << " ylo yhi\n"
       << zlo << ' ' << zhi << " zlo zhi\n\n";
@@ -68,16 +68,16 @@ void write_data_file(const std::string& path, const scenario::Scenario& scenario
   out << "Atoms # ellipsoid\n\n";
   for (std::size_t k = 0; k < particles.size(); ++k) {
     const Eigen::Vector3d& x = particles.position[k];
-    out << particles.id[k] + 1 << " 1 1 " << scenario.packing.density * kPerMilli << ' ' << x.x() << ' ' << x.y()
-        << ' ' << x.z() << '\n';
+    out << particles.id[k] + 1 << " 1 1 " << scenario.packing.density * kPerMilli << ' ' << x.x() << ' ' << x.y() << ' '
+        << x.z() << '\n';
   }
   // atom-ID shapex shapey shapez quatw quati quatj quatk (shape: diameters; quaternion body → world)
   out << "\nEllipsoids\n\n";
   for (std::size_t k = 0; k < particles.size(); ++k) {
     const Eigen::Vector3d& a = particles.semi_axes[k];
     const Eigen::Quaterniond& q = particles.orientation[k];
-    out << particles.id[k] + 1 << ' ' << 2.0 * a.x() << ' ' << 2.0 * a.y() << ' ' << 2.0 * a.z() << ' ' << q.w()
-        << ' ' << q.x() << ' ' << q.y() << ' ' << q.z() << '\n';
+    out << particles.id[k] + 1 << ' ' << 2.0 * a.x() << ' ' << 2.0 * a.y() << ' ' << 2.0 * a.z() << ' ' << q.w() << ' '
+        << q.x() << ' ' << q.y() << ' ' << q.z() << '\n';
   }
 }
 
@@ -90,12 +90,12 @@ std::string pair_coeff_line(const scenario::Scenario& scenario) {
        << number(m.yield_stress * kPerMilli) << " &\n  normal " << name_of(model.normal) << " damping_model "
        << name_of(model.damping) << " normal_damping " << number(model.normal_damping) << " tangential_damping "
        << number(model.tangential_damping) << " &\n  tangential_model " << name_of(model.tangential)
-       << " tangential_stiffness " << number(model.tangential_stiffness_ratio) << " friction "
-       << number(model.friction) << " narrow_phase_final_step " << number(model.narrow_phase_final_step)
-       << " &\n  lambda " << number(fit.lambda_amplitude) << ' ' << number(fit.lambda_rate) << ' '
-       << number(fit.lambda_offset) << " epsilon " << number(fit.epsilon_amplitude) << ' '
-       << number(fit.epsilon_rate) << ' ' << number(fit.epsilon_offset) << " exponent "
-       << number(fit.transition_exponent) << " yield_factor " << number(model.law.yield_pressure_factor) << '\n';
+       << " tangential_stiffness " << number(model.tangential_stiffness_ratio) << " friction " << number(model.friction)
+       << " narrow_phase_final_step " << number(model.narrow_phase_final_step) << " &\n  lambda "
+       << number(fit.lambda_amplitude) << ' ' << number(fit.lambda_rate) << ' ' << number(fit.lambda_offset)
+       << " epsilon " << number(fit.epsilon_amplitude) << ' ' << number(fit.epsilon_rate) << ' '
+       << number(fit.epsilon_offset) << " exponent " << number(fit.transition_exponent) << " yield_factor "
+       << number(model.law.yield_pressure_factor) << '\n';
   return line.str();
 }
 
@@ -124,7 +124,9 @@ void write_input(const std::string& path, const std::string& data_name, const sc
   const long every = std::max(1L, scenario.output.csv_every);
   // A stage ends on its condition (fix halt); its step budget only guards against a run that
   // never gets there: ten times the expected travel time.
-  const auto budget = [&](double time) { return std::to_string(static_cast<long long>(std::ceil(10.0 * time / dt)) + 1000); };
+  const auto budget = [&](double time) {
+    return std::to_string(static_cast<long long>(std::ceil(10.0 * time / dt)) + 1000);
+  };
   const double travel = std::max(plate_start - solid / (0.64 * area), 1.0);
 
   out << "# " << std::filesystem::path(scenario.source).filename().string()
@@ -175,15 +177,15 @@ void write_input(const std::string& path, const std::string& data_name, const sc
     }();
     out << "# settle: gravity and drag, at least settle.time, then until the rms speed is below the tolerance\n"
         << "fix          gravity all gravity " << number(settle.gravity) << " vector 0 0 -1\n"
-        << drag_fix(settle.drag_rate) << "run          " << static_cast<long long>(std::ceil(settle.time / dt))
-        << '\n'
+        << drag_fix(settle.drag_rate) << "run          " << static_cast<long long>(std::ceil(settle.time / dt)) << '\n'
         << "variable     settled equal sqrt(2*ke/" << number(mass) << ")<" << number(settle.speed_tolerance) << '\n'
         << "fix          halt all halt 50 v_settled > 0.5 error continue\n"
         << "run          " << static_cast<long long>(std::ceil(std::max(settle.max_time - settle.time, 0.0) / dt))
         << "\nunfix        halt\nunfix        gravity\n\n";
   }
   out << "# load: the plate starts start_gap above the layer, approaches, then calenders\n"
-      << "variable     phase string load\n" << drag_fix(0.0);
+      << "variable     phase string load\n"
+      << drag_fix(0.0);
   if (c.gravity > 0.0) out << "fix          gravity all gravity " << number(c.gravity) << " vector 0 0 -1\n";
   // Settled: the plate restarts start_gap above the highest centre plus the largest semi-axis (the
   // engine takes the highest surface point, which LAMMPS does not report).
@@ -202,9 +204,8 @@ void write_input(const std::string& path, const std::string& data_name, const sc
   if (c.target_thickness)
     target = (target.empty() ? "" : target + "||") + "v_thickness<=" + number(*c.target_thickness);
   if (approach) {
-    const std::string ended = c.approach_solid_fraction
-                                  ? "(1-v_porosity)>=" + number(*c.approach_solid_fraction)
-                                  : "v_plate_pressure>=" + number(c.approach_pressure);
+    const std::string ended = c.approach_solid_fraction ? "(1-v_porosity)>=" + number(*c.approach_solid_fraction)
+                                                        : "v_plate_pressure>=" + number(c.approach_pressure);
     out << "variable     approached equal (" << ended << ")||(" << target << ")\n"
         << "fix          halt all halt 1 v_approached > 0.5 error continue\n"
         << "run          " << budget(travel / first_speed) << "\nunfix        halt\n"
@@ -216,7 +217,8 @@ void write_input(const std::string& path, const std::string& data_name, const sc
       << "run          " << budget(travel / c.speed) << "\nunfix        halt\n\n";
 
   out << "# hold: " << (c.servo_hold ? "the servo holds the target pressure" : "the plate stops") << " for hold_time,"
-      << " with rest_drag_rate\nvariable     phase string hold\n" << drag_fix(c.rest_drag_rate)
+      << " with rest_drag_rate\nvariable     phase string hold\n"
+      << drag_fix(c.rest_drag_rate)
       << "variable     ts equal $(time:%.17g)\nvariable     zs equal $(v_plate_position:%.17g)\n";
   if (c.servo_hold && c.target_pressure)
     out << "fix_modify   wall servo hi " << number(*c.target_pressure * kPerMilli) << ' ' << number(c.speed)
@@ -226,8 +228,9 @@ void write_input(const std::string& path, const std::string& data_name, const sc
   out << "run          " << static_cast<long long>(std::ceil(c.hold_time / dt)) << "\n\n";
 
   out << "# unload: the plate lifts until it loses contact (pressure below release_fraction of the hold's)\n"
-      << "variable     phase string unload\n" << drag_fix(0.0)
-      << "variable     released equal v_plate_pressure<=" << number(c.release_fraction) << "*$(v_plate_pressure:%.17g)\n"
+      << "variable     phase string unload\n"
+      << drag_fix(0.0) << "variable     released equal v_plate_pressure<=" << number(c.release_fraction)
+      << "*$(v_plate_pressure:%.17g)\n"
       << "variable     ts equal $(time:%.17g)\nvariable     zs equal $(v_plate_position:%.17g)\n";
   if (c.servo_hold && c.target_pressure) out << "fix_modify   wall servo off\n";
   out << "variable     ztop equal " << ramp_expression(0.0, c.lift_speed, c.ramp_time) << '\n'
@@ -256,9 +259,10 @@ void run_export(const ExportOptions& options) {
   double layer_top = 0.0;  // highest surface point (where the load starts without settling)
   for (std::size_t k = 0; k < particles.size(); ++k) {
     top = std::max(top, particles.position[k].z() + particles.bounding_radius[k]);
-    layer_top = std::max(layer_top, Ellipsoid(particles.semi_axes[k], Pose{particles.position[k], particles.orientation[k]})
-                                        .axis_aligned_bounds()
-                                        .upper.z());
+    layer_top =
+        std::max(layer_top, Ellipsoid(particles.semi_axes[k], Pose{particles.position[k], particles.orientation[k]})
+                                .axis_aligned_bounds()
+                                .upper.z());
   }
   const double plate_start = top + 2.0 * spec.mean_radius;
   namespace fs = std::filesystem;

@@ -66,10 +66,20 @@ void ComputeEllipsoidContacts::compute_local() {
   for (const ContactRecord& c : contacts) {
     if (!counted(c)) continue;
     double* out = array_local[row++];
-    const double values[kColumns] = {static_cast<double>(tag[c.i]), static_cast<double>(tag[c.j]), c.overlap,
-                                     c.max_overlap, static_cast<double>(c.regime), c.size_ratio, c.normal_force,
-                                     c.tangential_force, c.force_on_i.x(), c.force_on_i.y(), c.force_on_i.z(),
-                                     c.point.x(), c.point.y(), c.point.z()};
+    const double values[kColumns] = {static_cast<double>(tag[c.i]),
+                                     static_cast<double>(tag[c.j]),
+                                     c.overlap,
+                                     c.max_overlap,
+                                     static_cast<double>(c.regime),
+                                     c.size_ratio,
+                                     c.normal_force,
+                                     c.tangential_force,
+                                     c.force_on_i.x(),
+                                     c.force_on_i.y(),
+                                     c.force_on_i.z(),
+                                     c.point.x(),
+                                     c.point.y(),
+                                     c.point.z()};
     std::copy(values, values + kColumns, out);
   }
 }

@@ -47,8 +47,7 @@ FixWallEllipsoidBK::FixWallEllipsoidBK(LAMMPS* instance, int narg, char** arg) :
   for (std::size_t at = 3; at < words.size();) {
     const std::string& keyword = words[at];
     const auto number = [&](std::size_t k, const char* what) {
-      if (at + k >= words.size())
-        fail(error, FLERR, prefix() + keyword + ": missing value " + what);
+      if (at + k >= words.size()) fail(error, FLERR, prefix() + keyword + ": missing value " + what);
       const auto value = to_number(words[at + k]);
       if (!value) fail(error, FLERR, prefix() + keyword + ": " + what + " '" + words[at + k] + "' is not a number");
       return *value;
@@ -94,8 +93,8 @@ FixWallEllipsoidBK::FixWallEllipsoidBK(LAMMPS* instance, int narg, char** arg) :
     if (used < 0) fail(error, FLERR, prefix() + problem);
     if (used == 0)
       fail(error, FLERR,
-           prefix() + "unknown keyword '" + keyword + "' (expected rigid, material, servo, servo_gain, servo_tolerance, " +
-               contact_keyword_names() + ")");
+           prefix() + "unknown keyword '" + keyword +
+               "' (expected rigid, material, servo, servo_gain, servo_tolerance, " + contact_keyword_names() + ")");
     contact_keywords_.emplace_back(words[at], words[at + 1]);
     at += static_cast<std::size_t>(used);
   }
@@ -197,8 +196,7 @@ int FixWallEllipsoidBK::setmask() { return POST_FORCE; }
 
 void FixWallEllipsoidBK::init() {
   if (!atom->ellipsoid_flag)
-    fail(error, FLERR,
-         prefix() + "requires atom_style ellipsoid (this run uses atom_style " + atom->atom_style + ")");
+    fail(error, FLERR, prefix() + "requires atom_style ellipsoid (this run uses atom_style " + atom->atom_style + ")");
   pair_ = dynamic_cast<PairEllipsoidBK*>(force->pair_match(PairEllipsoidBK::kStyle, 1));
   if (pair_ == nullptr)
     fail(error, FLERR,
@@ -206,8 +204,7 @@ void FixWallEllipsoidBK::init() {
   for (Plane& p : planes_) {
     if (p.kind != PlaneKind::variable) continue;
     p.variable_index = input->variable->find(p.variable.c_str());
-    if (p.variable_index < 0)
-      fail(error, FLERR, prefix() + "zplane: variable '" + p.variable + "' does not exist");
+    if (p.variable_index < 0) fail(error, FLERR, prefix() + "zplane: variable '" + p.variable + "' does not exist");
     if (!input->variable->equalstyle(p.variable_index))
       fail(error, FLERR, prefix() + "zplane: variable '" + p.variable + "' is not equal-style");
   }
@@ -286,9 +283,9 @@ void FixWallEllipsoidBK::move_planes(bool during_setup) {
   if (planes_[0].kind != PlaneKind::none && planes_[1].kind != PlaneKind::none &&
       !(planes_[0].position < planes_[1].position))
     fail(error, FLERR,
-         prefix() + "zplane: ZLO = " + std::to_string(planes_[0].position) + " is not below ZHI = " +
-             std::to_string(planes_[1].position) + " at step " + std::to_string(update->ntimestep) +
-             " (expected ZLO < ZHI)");
+         prefix() + "zplane: ZLO = " + std::to_string(planes_[0].position) +
+             " is not below ZHI = " + std::to_string(planes_[1].position) + " at step " +
+             std::to_string(update->ntimestep) + " (expected ZLO < ZHI)");
 }
 
 // Every particle must start between the planes: a centre behind a plane has no wall contact the
@@ -316,9 +313,10 @@ void FixWallEllipsoidBK::check_between_planes() {
     double z_all = 0.0;
     MPI_Allreduce(&z, &z_all, 1, MPI_DOUBLE, MPI_MAX, world);
     fail(error, FLERR,
-         prefix() + "zplane: " + kPlaneNames[w] + " = " + std::to_string(planes_[static_cast<std::size_t>(w)].position) +
-             (w == 0 ? " is above" : " is below") + " the centre of atom " + std::to_string(first) +
-             " (z = " + std::to_string(z_all) + "); every particle of the group must start between the planes");
+         prefix() + "zplane: " + kPlaneNames[w] + " = " +
+             std::to_string(planes_[static_cast<std::size_t>(w)].position) + (w == 0 ? " is above" : " is below") +
+             " the centre of atom " + std::to_string(first) + " (z = " + std::to_string(z_all) +
+             "); every particle of the group must start between the planes");
   }
 }
 

@@ -75,13 +75,13 @@ class FixWallEllipsoidBK : public LAMMPS_NS::Fix {
 
   struct Plane {
     PlaneKind kind = PlaneKind::none;
-    double value = 0.0;      // constant
-    std::string variable;    // variable name (without v_)
+    double value = 0.0;    // constant
+    std::string variable;  // variable name (without v_)
     int variable_index = -1;
     bool servo = false;
-    double position = 0.0;   // now
-    double velocity = 0.0;   // along z, over the last step
-    bool placed = false;     // position holds a value (set at the first setup or from a restart)
+    double position = 0.0;  // now
+    double velocity = 0.0;  // along z, over the last step
+    bool placed = false;    // position holds a value (set at the first setup or from a restart)
   };
 
   [[nodiscard]] std::string prefix() const;
@@ -114,8 +114,8 @@ class FixWallEllipsoidBK : public LAMMPS_NS::Fix {
 
   PairEllipsoidBK* pair_ = nullptr;
   std::vector<ellc::InteractionContext> contexts_;  // per atom type (index 0 unused)
-  std::vector<char> type_ready_;                     // 1 where pair_coeff I I exists
-  std::vector<double> history_;                      // per atom: kPlanes records
+  std::vector<char> type_ready_;                    // 1 where pair_coeff I I exists
+  std::vector<double> history_;                     // per atom: kPlanes records
   std::array<double, 6> force_local_{};
   std::array<double, 6> force_all_{};
   bool force_reduced_ = false;

@@ -4,7 +4,6 @@
 #include <cmath>
 #include <string_view>
 
-
 namespace ellc_lammps {
 
 std::optional<double> to_number(const std::string& word) {

@@ -374,7 +374,8 @@ double PairEllipsoidBK::single(int i, int j, int /*itype*/, int /*jtype*/, doubl
     contact_index_.clear();
     const auto nall = static_cast<std::uint64_t>(atom->nlocal + atom->nghost);
     for (std::size_t k = 0; k < contacts_.size(); ++k)
-      contact_index_[static_cast<std::uint64_t>(contacts_[k].i) * nall + static_cast<std::uint64_t>(contacts_[k].j)] = k;
+      contact_index_[static_cast<std::uint64_t>(contacts_[k].i) * nall + static_cast<std::uint64_t>(contacts_[k].j)] =
+          k;
     contact_index_at_ = computed_at_;
   }
   const auto nall = static_cast<std::uint64_t>(atom->nlocal + atom->nghost);
@@ -391,12 +392,10 @@ double PairEllipsoidBK::single(int i, int j, int /*itype*/, int /*jtype*/, doubl
   const double* x_j = atom->x[j];
   const Eigen::Vector3d apart(x_i[0] - x_j[0], x_i[1] - x_j[1], x_i[2] - x_j[2]);
   if (rsq > 0.0) fforce = force_on_i.dot(apart) / rsq;  // F·d̂ / r: LAMMPS's convention, F = fforce d for central forces
-  const double values[kSingleExtra] = {record.overlap,        record.max_overlap,
-                                       double(record.regime), record.size_ratio,
-                                       record.normal_force,   record.tangential_force,
-                                       force_on_i.x(),        force_on_i.y(),
-                                       force_on_i.z(),        record.point.x(),
-                                       record.point.y(),      record.point.z()};
+  const double values[kSingleExtra] = {record.overlap,    record.max_overlap,  double(record.regime),
+                                       record.size_ratio, record.normal_force, record.tangential_force,
+                                       force_on_i.x(),    force_on_i.y(),      force_on_i.z(),
+                                       record.point.x(),  record.point.y(),    record.point.z()};
   std::copy(values, values + kSingleExtra, svector);
   return 0.0;
 }

@@ -11,8 +11,8 @@
 
 #include <cstdint>
 #include <cstdio>
-#include <unordered_map>
 #include <string>
+#include <unordered_map>
 #include <vector>
 
 #include "ellc/geometry/ellipsoid.hpp"
@@ -31,8 +31,8 @@ struct ContactRecord {
   int j = 0;
   double overlap = 0.0;      // δ
   double max_overlap = 0.0;  // δ_*
-  int regime = 0;            // ellc::Regime as a number: 0 below δ_p, 1 elastic, 2 elastic-plastic, 3 fully plastic, 4 unloading
-  double size_ratio = 0.0;   // c_c/r̂ (r̂ the smaller of the two), as the built-in engine's validity report
+  int regime = 0;  // ellc::Regime as a number: 0 below δ_p, 1 elastic, 2 elastic-plastic, 3 fully plastic, 4 unloading
+  double size_ratio = 0.0;  // c_c/r̂ (r̂ the smaller of the two), as the built-in engine's validity report
   double normal_force = 0.0;
   double tangential_force = 0.0;  // |F_t|
   Eigen::Vector3d force_on_i = Eigen::Vector3d::Zero();

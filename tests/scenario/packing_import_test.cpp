@@ -90,8 +90,8 @@ TEST(PackingImport, GeneratedPackingSurvivesTheDataFileForm) {
   for (std::size_t k = 0; k < generated.size(); ++k) {
     const auto& a = generated.semi_axes[k];
     const auto& q = generated.orientation[k];
-    std::snprintf(line, sizeof line, "%u %.17g %.17g %.17g %.17g %.17g %.17g %.17g\n", generated.id[k] + 1,
-                  2 * a.x(), 2 * a.y(), 2 * a.z(), q.w(), q.x(), q.y(), q.z());
+    std::snprintf(line, sizeof line, "%u %.17g %.17g %.17g %.17g %.17g %.17g %.17g\n", generated.id[k] + 1, 2 * a.x(),
+                  2 * a.y(), 2 * a.z(), q.w(), q.x(), q.y(), q.z());
     text += line;
   }
   const engine::ParticleSet imported = import_packing(write_file("generated.data", text), spec.density, kBox);
@@ -122,9 +122,9 @@ TEST(PackingImport, BadFilesAreRefusedByName) {
   EXPECT_NE(message("word.csv", "x,y,z,a,b,c,qw,qx,qy,qz\n1,one,5,1,1,1,1,0,0,0\n").find("line 2: y = 'one'"),
             std::string::npos);
   const std::string header = "t\n\n1 atoms\n\n0 30 xlo xhi\n0 20 ylo yhi\n0 9 zlo zhi\n\n";
-  EXPECT_NE(message("box.data", "t\n\n1 atoms\n\n0 31 xlo xhi\n0 20 ylo yhi\n\nAtoms\n\n1 1 1 1 1 1 5\n")
-                .find("box.size"),
-            std::string::npos);
+  EXPECT_NE(
+      message("box.data", "t\n\n1 atoms\n\n0 31 xlo xhi\n0 20 ylo yhi\n\nAtoms\n\n1 1 1 1 1 1 5\n").find("box.size"),
+      std::string::npos);
   EXPECT_NE(message("noshape.data", header + "Atoms # ellipsoid\n\n1 1 1 1 1 1 5\n").find("Ellipsoids section"),
             std::string::npos);
   EXPECT_NE(message("style.data", header + "Atoms # sphere\n\n1 1 1 1 1 1 5\n").find("atom_style ellipsoid"),
@@ -132,10 +132,13 @@ TEST(PackingImport, BadFilesAreRefusedByName) {
 }
 
 TEST(PackingImport, ScenarioReadsThePackingFile) {
-  const std::string csv = write_file("scenario.csv", "x,y,z,a,b,c,qw,qx,qy,qz\n5,5,6,4,3,2,1,0,0,0\n9,9,9,2,2,2,1,0,0,0\n");
+  const std::string csv =
+      write_file("scenario.csv", "x,y,z,a,b,c,qw,qx,qy,qz\n5,5,6,4,3,2,1,0,0,0\n9,9,9,2,2,2,1,0,0,0\n");
   const std::string toml =
       "[material]\nyoungs_modulus = 142000.0\npoisson_ratio = 0.25\nyield_stress = 7900.0\n"
-      "[box]\nsize = [30.0, 20.0]\n[packing]\nfile = \"" + csv + "\"\ndensity = 4.7e-3\n"
+      "[box]\nsize = [30.0, 20.0]\n[packing]\nfile = \"" +
+      csv +
+      "\"\ndensity = 4.7e-3\n"
       "[calendering]\nspeed = 0.1\ntarget_pressure = 100.0\n";
   const Scenario scenario = parse_scenario(toml, "import.toml");
   EXPECT_EQ(scenario.packing.count, 2U);
@@ -148,8 +151,10 @@ TEST(PackingImport, ScenarioReadsThePackingFile) {
   const std::string both = test::input_error_message([&] {
     (void)parse_scenario(
         "[material]\nyoungs_modulus = 142000.0\npoisson_ratio = 0.25\nyield_stress = 7900.0\n"
-        "[box]\nsize = [30.0, 20.0]\n[packing]\nfile = \"" + csv + "\"\ndensity = 4.7e-3\ncount = 5\n"
-        "[calendering]\nspeed = 0.1\ntarget_pressure = 100.0\n",
+        "[box]\nsize = [30.0, 20.0]\n[packing]\nfile = \"" +
+            csv +
+            "\"\ndensity = 4.7e-3\ncount = 5\n"
+            "[calendering]\nspeed = 0.1\ntarget_pressure = 100.0\n",
         "import.toml");
   });
   EXPECT_NE(both.find("count"), std::string::npos) << both;

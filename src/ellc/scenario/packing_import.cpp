@@ -88,9 +88,9 @@ engine::ParticleSet read_csv(const std::string& path, std::istream& in, double d
     const std::vector<std::string> words = split(line, ',');
     if (column.empty()) {  // the header
       for (std::size_t k = 0; k < words.size(); ++k) {
-        const bool known = words[k] == "id" ||
-                           std::find_if(std::begin(kColumns), std::end(kColumns),
-                                        [&](const char* name) { return words[k] == name; }) != std::end(kColumns);
+        const bool known =
+            words[k] == "id" || std::find_if(std::begin(kColumns), std::end(kColumns),
+                                             [&](const char* name) { return words[k] == name; }) != std::end(kColumns);
         if (!known)
           throw InputError(path, field(line_number, "column " + std::to_string(k + 1)), "'" + words[k] + "'",
                            "one of x, y, z, a, b, c, qw, qx, qy, qz, id");
@@ -147,7 +147,8 @@ engine::ParticleSet read_data(const std::string& path, std::istream& in, double 
       continue;
     }
     if (section.empty()) {  // the header
-      if (words.size() == 2 && words[1] == "atoms") atoms = std::lround(to_number(path, line_number, "atoms", words[0]));
+      if (words.size() == 2 && words[1] == "atoms")
+        atoms = std::lround(to_number(path, line_number, "atoms", words[0]));
       if (words.size() == 4 && words[2] == "xlo") {
         xlo = to_number(path, line_number, "xlo", words[0]);
         xhi = to_number(path, line_number, "xhi", words[1]);
@@ -194,8 +195,7 @@ engine::ParticleSet read_data(const std::string& path, std::istream& in, double 
   if (!xlo || !ylo) throw InputError(path, "xlo xhi / ylo yhi", "missing", "the box bounds of the header");
   const double lx = *xhi - *xlo, ly = *yhi - *ylo;
   if (std::abs(lx - box.lx) > 1e-9 * box.lx || std::abs(ly - box.ly) > 1e-9 * box.ly)
-    throw InputError(path, "xhi - xlo, yhi - ylo",
-                     format_number(lx) + " x " + format_number(ly) + " µm",
+    throw InputError(path, "xhi - xlo, yhi - ylo", format_number(lx) + " x " + format_number(ly) + " µm",
                      "the scenario's box.size " + format_number(box.lx) + " x " + format_number(box.ly) + " µm");
   if (atoms >= 0 && static_cast<long>(bodies.size()) != atoms)
     throw InputError(path, "atoms", std::to_string(atoms) + " in the header",

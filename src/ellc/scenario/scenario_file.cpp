@@ -13,8 +13,8 @@
 #include "ellc/io/input_error.hpp"
 #include "ellc/io/table_reader.hpp"
 #include "ellc/material/material.hpp"
-#include "ellc/scenario/packing_import.hpp"
 #include "ellc/scenario/ensemble.hpp"
+#include "ellc/scenario/packing_import.hpp"
 #include "ellc/scenario/scenario.hpp"
 
 namespace ellc::scenario {
