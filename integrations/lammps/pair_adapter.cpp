@@ -43,6 +43,7 @@ PairEvaluation evaluate_pair(const AtomBody& a, const AtomBody& b, const ellc::I
   result.normal = solution.normal;
   result.point = solution.point;
   result.law = solution.law;
+  result.contact_radius_sq_per_overlap = solution.constants->contact_radius_sq_per_overlap;
   if (solution.law.regime != ellc::Regime::separated) {  // below δ_p the bodies overlap but carry nothing
     const ellc::PairForces forces = ellc::pair_forces(
         solution, a.ellipsoid.center(), {motion_a.velocity, motion_a.angular_velocity, motion_a.mass},

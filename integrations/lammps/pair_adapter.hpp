@@ -46,6 +46,7 @@ struct PairEvaluation {
   double overlap = 0.0;
   double normal_force = 0.0;  // the law's force with damping, ≥ 0
   ellc::LawResult law;
+  double contact_radius_sq_per_overlap = 0.0;        // c_c² / δ_* of the contact constants (c_c/r̂ output)
   Eigen::Vector3d normal = Eigen::Vector3d::Zero();  // a → b
   Eigen::Vector3d point = Eigen::Vector3d::Zero();   // where the force acts
   Eigen::Vector3d force_on_b = Eigen::Vector3d::Zero();

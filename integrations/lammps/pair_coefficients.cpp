@@ -4,11 +4,7 @@
 #include <cmath>
 #include <string_view>
 
-#include "ellc/contact/contact_parameters.hpp"
-
 namespace ellc_lammps {
-
-namespace {
 
 std::optional<double> to_number(const std::string& word) {
   double value = 0.0;
@@ -17,6 +13,43 @@ std::optional<double> to_number(const std::string& word) {
   if (code != std::errc() || ptr != end) return std::nullopt;
   return value;
 }
+
+int read_contact_keyword(const std::vector<std::string>& arguments, std::size_t at, ellc::ContactModelBuilder& builder,
+                         std::string& error) {
+  const std::string& keyword = arguments[at];
+  const std::string shared_name = keyword == "damping" ? "normal_damping" : keyword;  // older name
+  const ellc::ContactParameterName* parameter = ellc::find_contact_parameter(shared_name);
+  if (parameter == nullptr) return 0;
+  if (at + 1 >= arguments.size()) {
+    error = "keyword " + keyword + " needs 1 value(s)";
+    return -1;
+  }
+  const std::string& word = arguments[at + 1];
+  std::string expected;
+  if (parameter->kind == ellc::ParameterKind::choice) {
+    expected = builder.set(shared_name, word);
+  } else {
+    const auto value = to_number(word);
+    if (!value) {
+      error = keyword + ": '" + word + "' is not a number";
+      return -1;
+    }
+    expected = builder.set(shared_name, *value);
+  }
+  if (!expected.empty()) {
+    error = keyword + " = " + word + ": expected " + expected;
+    return -1;
+  }
+  return 2;
+}
+
+std::string contact_keyword_names() {
+  std::string known;
+  for (const auto& parameter : ellc::kContactParameters) known += std::string(parameter.name) + ", ";
+  return known + "damping";
+}
+
+namespace {
 
 bool same_law(const ellc::LawParameters& x, const ellc::LawParameters& y) {
   const auto& f = x.fit;
@@ -67,30 +100,19 @@ ParsedCoefficients parse_coefficients(const std::vector<std::string>& arguments)
   ellc::ContactModelBuilder builder(c.model);
   for (std::size_t at = 3; at < arguments.size();) {
     const std::string& keyword = arguments[at];
-    const std::string shared_name = keyword == "damping" ? "normal_damping" : keyword;  // older name
-    if (const ellc::ContactParameterName* parameter = ellc::find_contact_parameter(shared_name)) {
-      if (at + 1 >= arguments.size()) return fail("keyword " + keyword + " needs 1 value(s)");
-      const std::string& word = arguments[at + 1];
-      std::string expected;
-      if (parameter->kind == ellc::ParameterKind::choice) {
-        expected = builder.set(shared_name, word);
-      } else {
-        const auto value = to_number(word);
-        if (!value) return fail(keyword + ": '" + word + "' is not a number");
-        expected = builder.set(shared_name, *value);
-      }
-      if (!expected.empty()) return fail(keyword + " = " + word + ": expected " + expected);
-      at += 2;
+    std::string error;
+    const int used = read_contact_keyword(arguments, at, builder, error);
+    if (used < 0) return fail(error);
+    if (used > 0) {
+      at += static_cast<std::size_t>(used);
       continue;
     }
     const LawKeyword* match = nullptr;
     for (const LawKeyword& entry : law_keywords)
       if (keyword == entry.name) match = &entry;
     if (match == nullptr) {
-      std::string known;
-      for (const auto& parameter : ellc::kContactParameters) known += std::string(parameter.name) + ", ";
-      return fail("unknown keyword '" + keyword + "' (expected " + known +
-                  "damping, lambda, epsilon, exponent or yield_factor)");
+      return fail("unknown keyword '" + keyword + "' (expected " + contact_keyword_names() +
+                  ", lambda, epsilon, exponent or yield_factor)");
     }
     if (at + match->targets.size() >= arguments.size())
       return fail("keyword " + keyword + " needs " + std::to_string(match->targets.size()) + " value(s)");

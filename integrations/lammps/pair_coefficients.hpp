@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "ellc/contact/contact_model.hpp"
+#include "ellc/contact/contact_parameters.hpp"
 #include "ellc/material/material.hpp"
 
 namespace ellc_lammps {
@@ -41,6 +42,19 @@ struct ParsedCoefficients {
 
 // `arguments` are the words after "pair_coeff I J".
 [[nodiscard]] ParsedCoefficients parse_coefficients(const std::vector<std::string>& arguments);
+
+// One contact-model keyword of the shared vocabulary (or `damping`, the older name of
+// normal_damping) at arguments[at] and its value, handed to `builder`. Returns the words used:
+// 0 when arguments[at] is not such a keyword, 2 when accepted; -1 with `error` set when the value
+// is missing or refused. pair_coeff and fix wall/ellipsoid/bk read their keywords through this.
+[[nodiscard]] int read_contact_keyword(const std::vector<std::string>& arguments, std::size_t at,
+                                       ellc::ContactModelBuilder& builder, std::string& error);
+
+// "normal, damping_model, ..., narrow_phase_final_step, damping": the keywords read_contact_keyword knows.
+[[nodiscard]] std::string contact_keyword_names();
+
+// A number as LAMMPS input writes it (the whole word; "inf" included), else nothing.
+[[nodiscard]] std::optional<double> to_number(const std::string& word);
 
 // The contact of two bodies of the same material (an explicit pair_coeff line).
 [[nodiscard]] ellc::InteractionContext explicit_pair(const TypeCoefficients& coefficients);

@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "ellc/engine/rigid_body.hpp"
+#include "ellc/engine/simulation.hpp"
 #include "fix_contact_history.hpp"
 
 namespace ellc_lammps {
@@ -22,7 +23,9 @@ bool in_calibrated_range(std::array<double, 3> semi_axes) {
 }  // namespace
 
 PairEllipsoidBK::PairEllipsoidBK(LAMMPS* instance) : Pair(instance) {
-  single_enable = 0;
+  single_enable = 1;
+  single_extra = kSingleExtra;
+  svector = new double[kSingleExtra];
   restartinfo = 1;
   comm_forward = kBodyValues;
   finitecutflag = 1;
@@ -30,6 +33,8 @@ PairEllipsoidBK::PairEllipsoidBK(LAMMPS* instance) : Pair(instance) {
 
 PairEllipsoidBK::~PairEllipsoidBK() {
   if (copymode) return;
+  delete[] svector;
+  svector = nullptr;
   // The history fix and the shape compute belong to this style; remove them with it.
   if (modify->find_fix(kHistoryFixId) >= 0) modify->delete_fix(kHistoryFixId);
   if (modify->find_compute(kBodiesComputeId) >= 0) modify->delete_compute(kBodiesComputeId);
@@ -282,6 +287,7 @@ void PairEllipsoidBK::compute(int eflag, int vflag) {
   }
 
   long touching = 0;
+  contacts_.clear();
   const NeighList* neighbors = list;
   for (int ii = 0; ii < neighbors->inum; ++ii) {
     const int i = neighbors->ilist[ii];
@@ -323,6 +329,20 @@ void PairEllipsoidBK::compute(int eflag, int vflag) {
       ++touching;
 
       const Eigen::Vector3d force_on_i = i_is_a ? Eigen::Vector3d(-result.force_on_b) : result.force_on_b;
+      ContactRecord& record = contacts_.emplace_back();
+      record.i = i;
+      record.j = j;
+      record.overlap = result.overlap;
+      record.max_overlap = result.law.max_overlap;
+      record.regime = static_cast<int>(result.law.regime);
+      ellc::ContactConstants size;  // the one constant c_c/r̂ needs, into the engine's definition
+      size.contact_radius_sq_per_overlap = result.contact_radius_sq_per_overlap;
+      record.size_ratio =
+          ellc::engine::contact_size_ratio(size, result.law.max_overlap, std::min(mean_radii_[sa], mean_radii_[sb]));
+      record.normal_force = result.normal_force;
+      record.tangential_force = (result.force_on_b - result.normal_force * result.normal).norm();
+      record.force_on_i = force_on_i;
+      record.point = result.point;
       const Eigen::Vector3d& torque_on_i = i_is_a ? result.torque_on_a : result.torque_on_b;
       const Eigen::Vector3d& torque_on_j = i_is_a ? result.torque_on_b : result.torque_on_a;
       for (int k = 0; k < 3; ++k) {
@@ -341,7 +361,43 @@ void PairEllipsoidBK::compute(int eflag, int vflag) {
     }
   }
   touching_pairs_ = touching;
+  computed_at_ = update->ntimestep;
   if (vflag_fdotr) virial_fdotr_compute();
+}
+
+double PairEllipsoidBK::single(int i, int j, int /*itype*/, int /*jtype*/, double rsq, double /*factor_coul*/,
+                               double /*factor_lj*/, double& fforce) {
+  fforce = 0.0;
+  std::fill(svector, svector + kSingleExtra, 0.0);
+  if (computed_at_ != update->ntimestep) return 0.0;  // no forces of this step (yet)
+  if (contact_index_at_ != computed_at_) {
+    contact_index_.clear();
+    const auto nall = static_cast<std::uint64_t>(atom->nlocal + atom->nghost);
+    for (std::size_t k = 0; k < contacts_.size(); ++k)
+      contact_index_[static_cast<std::uint64_t>(contacts_[k].i) * nall + static_cast<std::uint64_t>(contacts_[k].j)] =
+          k;
+    contact_index_at_ = computed_at_;
+  }
+  const auto nall = static_cast<std::uint64_t>(atom->nlocal + atom->nghost);
+  double sign = 1.0;  // the record's i is this call's i (+1) or its j (−1)
+  auto found = contact_index_.find(static_cast<std::uint64_t>(i) * nall + static_cast<std::uint64_t>(j));
+  if (found == contact_index_.end()) {
+    found = contact_index_.find(static_cast<std::uint64_t>(j) * nall + static_cast<std::uint64_t>(i));
+    sign = -1.0;
+  }
+  if (found == contact_index_.end()) return 0.0;
+  const ContactRecord& record = contacts_[found->second];
+  const Eigen::Vector3d force_on_i = sign * record.force_on_i;
+  const double* x_i = atom->x[i];
+  const double* x_j = atom->x[j];
+  const Eigen::Vector3d apart(x_i[0] - x_j[0], x_i[1] - x_j[1], x_i[2] - x_j[2]);
+  if (rsq > 0.0) fforce = force_on_i.dot(apart) / rsq;  // F·d̂ / r: LAMMPS's convention, F = fforce d for central forces
+  const double values[kSingleExtra] = {record.overlap,    record.max_overlap,  double(record.regime),
+                                       record.size_ratio, record.normal_force, record.tangential_force,
+                                       force_on_i.x(),    force_on_i.y(),      force_on_i.z(),
+                                       record.point.x(),  record.point.y(),    record.point.z()};
+  std::copy(values, values + kSingleExtra, svector);
+  return 0.0;
 }
 
 // Restart files carry the settings and every explicit pair_coeff line; mixing is redone on read.

@@ -9,8 +9,10 @@
 // style forwards them to ghost atoms itself. Contact history lives in fix ellipsoid/bk/history,
 // which this style creates. Time integration: fix nve/asphere (it integrates the torques).
 
+#include <cstdint>
 #include <cstdio>
 #include <string>
+#include <unordered_map>
 #include <vector>
 
 #include "ellc/geometry/ellipsoid.hpp"
@@ -21,6 +23,21 @@
 namespace ellc_lammps {
 
 class FixContactHistory;
+
+// One touching pair of the last force evaluation, for per-contact output (single(), compute
+// ellipsoid/bk/contacts). Atom i is the neighbor list's first atom; vectors are in the world frame.
+struct ContactRecord {
+  int i = 0;  // local indices (j may be a ghost)
+  int j = 0;
+  double overlap = 0.0;      // δ
+  double max_overlap = 0.0;  // δ_*
+  int regime = 0;  // ellc::Regime as a number: 0 below δ_p, 1 elastic, 2 elastic-plastic, 3 fully plastic, 4 unloading
+  double size_ratio = 0.0;  // c_c/r̂ (r̂ the smaller of the two), as the built-in engine's validity report
+  double normal_force = 0.0;
+  double tangential_force = 0.0;  // |F_t|
+  Eigen::Vector3d force_on_i = Eigen::Vector3d::Zero();
+  Eigen::Vector3d point = Eigen::Vector3d::Zero();
+};
 
 class PairEllipsoidBK : public LAMMPS_NS::Pair {
  public:
@@ -36,6 +53,12 @@ class PairEllipsoidBK : public LAMMPS_NS::Pair {
   void coeff(int narg, char** arg) override;
   void init_style() override;
   double init_one(int i, int j) override;
+  // The force of a touching pair (i, j) as the last compute() applied it: fforce·(x_i − x_j) is its
+  // part along the centre line; the extra values (compute pair/local p1..p12) are δ, δ_*, regime,
+  // c_c/r̂, F_n, |F_t|, the force on i (x y z) and the contact point (x y z). Zero for pairs not
+  // touching. Energy 0: the law is dissipative (docs/lammps.md).
+  double single(int i, int j, int itype, int jtype, double rsq, double factor_coul, double factor_lj,
+                double& fforce) override;
   void write_restart(FILE* file) override;
   void read_restart(FILE* file) override;
   void write_restart_settings(FILE* file) override;
@@ -47,8 +70,23 @@ class PairEllipsoidBK : public LAMMPS_NS::Pair {
   // Pairs in contact (δ > 0) on this rank at the last force evaluation (diagnostics, benchmark).
   [[nodiscard]] long touching_pairs() const { return touching_pairs_; }
 
+  // For fix wall/ellipsoid/bk: the bodies this step's compute() posed, owned and ghost atoms,
+  // valid from compute() until the atoms move (computed_at() is that step).
+  [[nodiscard]] LAMMPS_NS::bigint computed_at() const { return computed_at_; }
+  [[nodiscard]] const ellc::Ellipsoid& posed_body(int index) const { return shapes_[static_cast<std::size_t>(index)]; }
+  [[nodiscard]] double mean_radius(int index) const { return mean_radii_[static_cast<std::size_t>(index)]; }
+  [[nodiscard]] const BodyState& motion(int index) const { return motions_[static_cast<std::size_t>(index)]; }
+  // pair_coeff I I as given (the material of type I), or null when that line is missing.
+  [[nodiscard]] const TypeCoefficients* type_coefficients(int type) const {
+    return given_[type_index(type, type)] ? &type_coefficients_[type_index(type, type)] : nullptr;
+  }
+  [[nodiscard]] ellc::HertzMode hertz_mode() const { return hertz_mode_; }
+  // The touching pairs of the last compute() on this rank (computed_at()).
+  [[nodiscard]] const std::vector<ContactRecord>& contacts() const { return contacts_; }
+
  private:
-  static constexpr int kBodyValues = 7;  // semi-axes (3), quaternion w i j k (4)
+  static constexpr int kBodyValues = 7;
+  static constexpr int kSingleExtra = 12;  // semi-axes (3), quaternion w i j k (4)
 
   void allocate();
   [[nodiscard]] std::size_t type_index(int i, int j) const {
@@ -72,6 +110,10 @@ class PairEllipsoidBK : public LAMMPS_NS::Pair {
   bool warned_aspect_ = false;
   long narrow_phase_failures_ = 0;
   long touching_pairs_ = 0;
+  LAMMPS_NS::bigint computed_at_ = -1;
+  std::vector<ContactRecord> contacts_;
+  std::unordered_map<std::uint64_t, std::size_t> contact_index_;  // (i, j) → contacts_, built by single()
+  LAMMPS_NS::bigint contact_index_at_ = -1;
 };
 
 }  // namespace ellc_lammps

@@ -2,7 +2,9 @@
 
 #include <library.h>
 
+#include "compute_contacts.hpp"
 #include "fix_contact_history.hpp"
+#include "fix_wall_ellipsoid_bk.hpp"
 #include "lammps_includes.hpp"
 #include "pair_ellipsoid_bk.hpp"
 
@@ -12,6 +14,12 @@ namespace {
 LAMMPS_NS::Pair* create_pair(LAMMPS_NS::LAMMPS* lmp) { return new PairEllipsoidBK(lmp); }
 LAMMPS_NS::Fix* create_history(LAMMPS_NS::LAMMPS* lmp, int narg, char** arg) {
   return new FixContactHistory(lmp, narg, arg);
+}
+LAMMPS_NS::Compute* create_contacts(LAMMPS_NS::LAMMPS* lmp, int narg, char** arg) {
+  return new ComputeEllipsoidContacts(lmp, narg, arg);
+}
+LAMMPS_NS::Fix* create_wall(LAMMPS_NS::LAMMPS* lmp, int narg, char** arg) {
+  return new FixWallEllipsoidBK(lmp, narg, arg);
 }
 }  // namespace
 
@@ -29,6 +37,8 @@ void register_styles(LAMMPS_NS::LAMMPS* lmp, int expected_version) {
     fail(lmp->error, FLERR, problem);
   (*lmp->force->pair_map)[PairEllipsoidBK::kStyle] = &create_pair;
   (*lmp->modify->fix_map)[FixContactHistory::kStyle] = &create_history;
+  (*lmp->modify->fix_map)[FixWallEllipsoidBK::kStyle] = &create_wall;
+  (*lmp->modify->compute_map)[ComputeEllipsoidContacts::kStyle] = &create_contacts;
 }
 
 }  // namespace ellc_lammps

@@ -4,10 +4,20 @@
   curve    the two-particle LAMMPS run reproduces `ellc curve` force-overlap points
   mpi      a dense run on 2 MPI ranks reproduces the 1-rank thermo output
   restart  a run split by write_restart/read_restart reproduces the same split without files
+  contacts compute pair/local (Pair::single) and compute ellipsoid/bk/contacts report the same
+           contacts, and their forces add up to the pair style's virial
+  export   `ellc export-lammps` of a scenario: the data file brings `ellc dem` back to the same run
+           ([packing] file), and lmp_ellc runs the exported protocol with the engine's columns
+  engines  the exported scenario in LAMMPS (-np 1 and 2) agrees with `ellc dem` on the same packing
+           within the spread of the built-in engine over packing seeds (measured in the test)
+  wall     one ellipsoid pressed on a plane of fix wall/ellipsoid/bk gives `ellc geometry`'s wall
+           force, for random orientations, both planes and wall materials
 """
 import argparse
 import csv
+import math
 import os
+import random
 import subprocess
 import sys
 import tempfile
@@ -115,12 +125,305 @@ def check_restart(args):
     with tempfile.TemporaryDirectory() as work:
         common = ["-in", args.input, "-log", "none", "-var", "steps", args.steps]
         restart = ["-var", "restart", os.path.join(work, "split.restart")]
-        common += ["-var", "dissipative", args.dissipative]
+        common += ["-var", "dissipative", args.dissipative, "-var", "top", args.top]
         reference = run([args.lmp, *common, "-var", "mode", args.reference], work)
         first = run([args.lmp, *common, *restart, "-var", "mode", "first"], work)
         second = run([args.lmp, *common, *restart, "-var", "mode", "second"], work)
     what = "in-process split" if args.reference == "split" else "single run"
     compare_thermo(reference, first + second, args.digits, f"restart split vs {what}")
+
+
+def read_dump(path):
+    """Rows of the last snapshot of a LAMMPS text dump, as lists of floats."""
+    with open(path) as handle:
+        lines = handle.read().splitlines()
+    start = max(index for index, line in enumerate(lines) if line.startswith("ITEM: ENTRIES") or
+                line.startswith("ITEM: ATOMS"))
+    rows = []
+    for line in lines[start + 1:]:
+        if line.startswith("ITEM:"):
+            break
+        rows.append([float(word) for word in line.split()])
+    return rows
+
+
+def check_contacts(args):
+    launcher = [args.mpirun, *[flag for flag in args.mpirun_flag if flag], "-np", str(args.np)] if args.mpirun else []
+    with tempfile.TemporaryDirectory() as work:
+        output = run([*launcher, args.lmp, "-in", args.input, "-log", "none", "-var", "steps", args.steps,
+                      "-var", "dir", work], work)
+        pairs = read_dump(os.path.join(work, "pairs.dump"))
+        contacts = read_dump(os.path.join(work, "contacts.dump"))
+        atoms = {int(row[0]): row[1:4] for row in read_dump(os.path.join(work, "atoms.dump"))}
+    names, rows = thermo_rows(output)
+    last = rows[max(rows)]
+    virial_pressure, volume = last[1], last[2]
+    box = round(volume ** (1.0 / 3.0), 9)  # the cubic periodic box of the input
+    # compute ellipsoid/bk/contacts: index, id_i, id_j, delta, delta_*, regime, c_c/r, Fn, |Ft|, F (3), point (3)
+    by_pair = {}
+    for row in contacts:
+        key = (int(row[1]), int(row[2]))
+        if key in by_pair or key[::-1] in by_pair:
+            sys.exit(f"contact {key} appears twice in compute ellipsoid/bk/contacts")
+        by_pair[key] = row[3:]
+    if not by_pair:
+        sys.exit("no contacts: the test packing should be dense")
+    # compute pair/local with single(): index, id_i, id_j, p1..p12 (zero for pairs not touching)
+    touching = [row for row in pairs if row[3] > 0.0]
+    if len(touching) != len(by_pair):
+        sys.exit(f"compute pair/local has {len(touching)} touching pairs, compute ellipsoid/bk/contacts {len(by_pair)}")
+    for row in touching:
+        key = (int(row[1]), int(row[2]))
+        values = row[3:]
+        if key not in by_pair:
+            key = key[::-1]
+            values = values[:6] + [-v for v in values[6:9]] + values[9:]  # the force on the other atom
+        if key not in by_pair:
+            sys.exit(f"pair {key} touches in compute pair/local but not in compute ellipsoid/bk/contacts")
+        if any(abs(a - b) > 1e-12 * max(1.0, abs(a)) for a, b in zip(values, by_pair[key])):
+            sys.exit(f"pair {key}: single() {values} vs compute {by_pair[key]}")
+    # Each force splits into its normal and tangential parts; together they are the pair's virial.
+    virial = 0.0
+    for (a, b), values in by_pair.items():
+        normal, tangential, force = values[4], values[5], values[6:9]
+        magnitude = math.sqrt(sum(f * f for f in force))
+        if abs(math.hypot(normal, tangential) - magnitude) > 1e-9 * max(magnitude, 1e-300):
+            sys.exit(f"pair {(a, b)}: |F| = {magnitude} but hypot(F_n, F_t) = {math.hypot(normal, tangential)}")
+        apart = [xa - xb - box * round((xa - xb) / box) for xa, xb in zip(atoms[a], atoms[b])]
+        virial += sum(d * f for d, f in zip(apart, force))
+    from_contacts = virial / (3.0 * volume)
+    error = abs(from_contacts - virial_pressure) / abs(virial_pressure)
+    if error > args.tolerance:
+        sys.exit(f"sum over contacts of F.d / 3V = {from_contacts!r}, compute pressure virial {virial_pressure!r} "
+                 f"(relative {error:.3g} > {args.tolerance:g})")
+    print(f"{len(by_pair)} contacts: single() and compute ellipsoid/bk/contacts agree; their virial matches the "
+          f"pair's to {error:.3g} (tolerance {args.tolerance:g})")
+
+
+WALL_INPUT = """units micro
+atom_style ellipsoid
+boundary p p f
+read_data {data}
+pair_style ellipsoid/bk
+pair_coeff 1 1 1.42e8 0.25 7.9e6
+fix wall all wall/ellipsoid/bk zplane {zlo} {zhi} {material}
+thermo_style custom step f_wall[1] f_wall[2] f_wall[3] f_wall[4] f_wall[5] f_wall[6]
+thermo_modify format float %.17g
+run 0
+"""
+
+
+def random_quaternion(rng):
+    """A uniformly random unit quaternion (w, x, y, z) (Shoemake)."""
+    u1, u2, u3 = rng.random(), rng.random(), rng.random()
+    a, b = math.sqrt(1 - u1), math.sqrt(u1)
+    return (a * math.sin(2 * math.pi * u2), a * math.cos(2 * math.pi * u2), b * math.sin(2 * math.pi * u3),
+            b * math.cos(2 * math.pi * u3))
+
+
+def lowest_point(semi_axes, q):
+    """Support of the posed ellipsoid along -z: centre z minus this is its lowest surface point."""
+    w, x, y, z = q
+    # Third row of the rotation matrix (body -> world): the body-frame components of world z.
+    row = (2 * (x * z - w * y), 2 * (y * z + w * x), 1 - 2 * (x * x + y * y))
+    return math.sqrt(sum((a * r) ** 2 for a, r in zip(semi_axes, row)))
+
+
+def geometry_force(output):
+    for line in output.splitlines():
+        if line.strip().startswith("force on J"):
+            inside = line[line.index("(") + 1:line.index(")")]
+            return [float(value) for value in inside.split(",")]
+    sys.exit(f"no 'force on J' in the ellc geometry output:\n{output}")
+
+
+def check_wall(args):
+    rng = random.Random(args.seed)
+    worst = 0.0
+    with tempfile.TemporaryDirectory() as work:
+        for case in range(args.cases):
+            semi_axes = [rng.uniform(3.0, 6.0) for _ in range(3)]
+            q = random_quaternion(rng)
+            upper = case % 2 == 1
+            wall_material = None if case % 3 == 0 else (rng.uniform(5e4, 3e5), rng.uniform(0.1, 0.4), 1e4)
+            reach = lowest_point(semi_axes, q)
+            overlap = rng.uniform(0.005, 0.06) * reach  # elastic to well into the plastic range
+            wall_z = 0.0
+            centre_z = wall_z - reach + overlap if upper else wall_z + reach - overlap
+            poses = os.path.join(work, f"poses{case}.toml")
+            with open(poses, "w") as handle:
+                handle.write("[material]\nyoungs_modulus = 142000.0\npoisson_ratio = 0.25\nyield_stress = 7900.0\n")
+                handle.write(f"[body_I]\nsemi_axes = [{semi_axes[0]!r}, {semi_axes[1]!r}, {semi_axes[2]!r}]\n")
+                handle.write(f"position = [0.0, 0.0, {centre_z!r}]\norientation = [{', '.join(repr(v) for v in q)}]\n")
+                handle.write(f"[wall]\npoint = [0.0, 0.0, {wall_z!r}]\nnormal = [0.0, 0.0, {-1.0 if upper else 1.0}]\n")
+                if wall_material:
+                    handle.write("[wall.material]\nyoungs_modulus = {!r}\npoisson_ratio = {!r}\nyield_stress = {!r}\n"
+                                 .format(*wall_material))
+            expected = geometry_force(run([args.ellc, "geometry", poses], work))
+            data = os.path.join(work, f"wall{case}.data")
+            with open(data, "w") as handle:
+                handle.write("wall test\n\n1 atoms\n1 atom types\n1 ellipsoids\n\n")
+                handle.write("-50 50 xlo xhi\n-50 50 ylo yhi\n-50 50 zlo zhi\n\nAtoms # ellipsoid\n\n")
+                handle.write(f"1 1 1 4.7 0.0 0.0 {centre_z!r}\n\nEllipsoids\n\n")
+                handle.write(f"1 {' '.join(repr(2 * a) for a in semi_axes)} {' '.join(repr(v) for v in q)}\n")
+            # LAMMPS units micro: pressure kPa (MPa x 1e3), force nN (uN x 1e3).
+            material = "material particle" if wall_material is None else "material {!r} {!r} {!r}".format(
+                wall_material[0] * 1e3, wall_material[1], wall_material[2] * 1e3)
+            planes = ("NULL", repr(wall_z)) if upper else (repr(wall_z), "NULL")
+            script = os.path.join(work, f"in.wall{case}")
+            with open(script, "w") as handle:
+                handle.write(WALL_INPUT.format(data=data, zlo=planes[0], zhi=planes[1], material=material))
+            _, rows = thermo_rows(run([args.lmp, "-in", script, "-log", "none"], work))
+            values = rows[0][1:]
+            force = [1e-3 * v for v in (values[3:6] if upper else values[0:3])]
+            other = values[0:3] if upper else values[3:6]
+            if any(v != 0.0 for v in other):
+                sys.exit(f"case {case}: the other plane (NULL) carries a force {other}")
+            scale = math.sqrt(sum(v * v for v in expected))
+            error = math.sqrt(sum((a - b) ** 2 for a, b in zip(force, expected))) / scale
+            worst = max(worst, error)
+            if error > args.tolerance:
+                sys.exit(f"case {case} ({'upper' if upper else 'lower'} plane): ellc geometry {expected}, "
+                         f"LAMMPS {force} (relative {error:.3g} > {args.tolerance:g})")
+    print(f"{args.cases} random wall contacts agree with ellc geometry; worst relative difference {worst:.3g} "
+          f"(tolerance {args.tolerance:g}; ellc geometry prints 10 digits)")
+
+
+ENGINE_COLUMNS = ["step", "time", "phase", "plate_position", "thickness", "plate_pressure", "bottom_pressure",
+                  "porosity", "coordination_number"]
+
+
+def read_series(path):
+    with open(path) as handle:
+        return list(csv.DictReader(handle))
+
+
+def scenario_with(text, **packing):
+    """The scenario text with its [packing] table replaced by the given keys."""
+    lines, out, skipping = text.splitlines(), [], False
+    for line in lines:
+        if line.strip().startswith("["):
+            skipping = line.strip() == "[packing]"
+            if skipping:
+                out.append("[packing]")
+                out.extend(f"{key} = {value}" for key, value in packing.items())
+                continue
+        if not skipping:
+            out.append(line)
+    return "\n".join(out) + "\n"
+
+
+def packing_value(text, key):
+    inside = False
+    for line in text.splitlines():
+        if line.strip().startswith("["):
+            inside = line.strip() == "[packing]"
+        elif inside and line.split("=")[0].strip() == key:
+            return line.split("=", 1)[1].split("#")[0].strip()
+    sys.exit(f"no [packing] {key} in the scenario")
+
+
+def run_lammps(args, directory, np):
+    launcher = [args.mpirun, *[flag for flag in args.mpirun_flag if flag], "-np", str(np)] if np > 1 else []
+    run([*launcher, args.lmp, "-in", "in.scenario", "-log", "none"], directory)
+    return read_series(os.path.join(directory, "timeseries.csv"))
+
+
+def check_export(args):
+    with open(args.scenario) as handle:
+        text = handle.read()
+    with tempfile.TemporaryDirectory() as work:
+        exported = os.path.join(work, "exported")
+        run([args.ellc, "export-lammps", args.scenario, "-o", exported], work)
+        # The data file brings `ellc dem` back to the generated packing, bit for bit.
+        imported = os.path.join(work, "imported.toml")
+        with open(imported, "w") as handle:
+            handle.write(scenario_with(text, file='"exported/packing.data"', density=packing_value(text, "density")))
+        run([args.ellc, "dem", args.scenario, "-o", os.path.join(work, "generated"), "--no-plot", "-q"], work)
+        run([args.ellc, "dem", imported, "-o", os.path.join(work, "from_file"), "--no-plot", "-q"], work)
+        # An imported packing's r̂ is its measured mean, not the generator's nominal one. Two things
+        # use it: where the plate waits before the load (the settle row of a scenario without
+        # settling) and the inertial number's length scale. Everything else must be identical.
+        def physical(path):
+            return [{key: value for key, value in row.items() if key != "inertial_number"}
+                    for row in read_series(path) if row["phase"] != "settle"]
+        generated = physical(os.path.join(work, "generated", "timeseries.csv"))
+        from_file = physical(os.path.join(work, "from_file", "timeseries.csv"))
+        if generated != from_file:
+            first = next(k for k, (a, b) in enumerate(zip(generated, from_file)) if a != b) if len(generated) == len(
+                from_file) else min(len(generated), len(from_file))
+            sys.exit(f"ellc dem from the exported data file differs from the generated packing's run at row {first}")
+        # The exported input runs in LAMMPS and writes the engine's columns through every phase.
+        series = run_lammps(args, exported, 1)
+    if list(series[0].keys()) != ENGINE_COLUMNS:
+        sys.exit(f"timeseries.csv columns {list(series[0].keys())}, expected {ENGINE_COLUMNS}")
+    engine_header = list(generated[0].keys())
+    missing = [name for name in ENGINE_COLUMNS if name not in engine_header]
+    if missing:
+        sys.exit(f"the built-in engine's timeseries.csv has no column {missing}")
+    phases = []
+    for row in series:
+        if not phases or phases[-1] != row["phase"]:
+            phases.append(row["phase"])
+    if phases != ["load", "hold", "unload", "done"]:
+        sys.exit(f"phases {phases}, expected load, hold, unload, done")
+    target = float(args.target)
+    loaded = max(float(row["plate_pressure"]) for row in series if row["phase"] == "load")
+    if loaded < target:
+        sys.exit(f"the load ended at {loaded} MPa, below the target {target} MPa")
+    print(f"ellc dem from the exported packing repeats the generated run ({len(generated)} rows, identical); "
+          f"lmp_ellc ran load, hold, unload ({len(series)} rows, peak load pressure {loaded:.4g} MPa)")
+
+
+def hold_start(series):
+    """The first row of the hold: where the load reached its target."""
+    return next(row for row in series if row["phase"] == "hold")
+
+
+def hold_rows(series):
+    """The rows where the load reached its target (first of the hold) and where the hold ended."""
+    hold = [row for row in series if row["phase"] == "hold"]
+    if not hold:
+        sys.exit("the run has no hold phase")
+    return {"end of load": hold[0], "end of hold": hold[-1]}
+
+
+def check_engines(args):
+    import statistics
+    with open(args.scenario) as handle:
+        text = handle.read()
+    seed = int(packing_value(text, "seed"))
+    quantities = ("porosity", "coordination_number")
+    readings = [(when, name) for when in ("end of load", "end of hold") for name in quantities]
+    with tempfile.TemporaryDirectory() as work:
+        # The chaotic spread: the built-in engine over other packing seeds, the scenario otherwise the same.
+        samples = {reading: [] for reading in readings}
+        for other in range(seed + 1, seed + 1 + args.seeds):
+            path = os.path.join(work, f"seed{other}.toml")
+            with open(path, "w") as handle:
+                handle.write(text.replace(f"seed = {seed}", f"seed = {other}"))
+            run([args.ellc, "dem", path, "-o", os.path.join(work, f"dem{other}"), "--no-plot", "-q"], work)
+            rows = hold_rows(read_series(os.path.join(work, f"dem{other}", "timeseries.csv")))
+            for when, name in readings:
+                samples[(when, name)].append(float(rows[when][name]))
+        spread = {reading: statistics.stdev(values) for reading, values in samples.items()}
+        run([args.ellc, "dem", args.scenario, "-o", os.path.join(work, "dem"), "--no-plot", "-q"], work)
+        builtin = hold_rows(read_series(os.path.join(work, "dem", "timeseries.csv")))
+        run([args.ellc, "export-lammps", args.scenario, "-o", os.path.join(work, "lammps")], work)
+        worst = 0.0
+        for np in (1, 2):
+            lammps = hold_rows(run_lammps(args, os.path.join(work, "lammps"), np))
+            for when, name in readings:
+                a, b = float(builtin[when][name]), float(lammps[when][name])
+                ratio = abs(a - b) / spread[(when, name)]
+                worst = max(worst, ratio)
+                print(f"np {np}: {name} at the {when}: ellc dem {a:.6g}, LAMMPS {b:.6g}; difference {abs(a - b):.3g}"
+                      f" = {ratio:.3g} x the seed spread {spread[(when, name)]:.3g} (sd over {args.seeds} seeds)")
+                if ratio > args.tolerance:
+                    sys.exit(f"np {np}: {name} at the {when} differs by {ratio:.3g} seed spreads "
+                             f"(tolerance {args.tolerance})")
+    print(f"LAMMPS (np 1, 2) and ellc dem agree on the same packing; worst difference {worst:.3g} seed spreads "
+          f"(tolerance {args.tolerance})")
 
 
 def main():
@@ -148,11 +451,38 @@ def main():
         if name == "restart":
             command.add_argument("--reference", choices=["split", "full"], default="split")
             command.add_argument("--dissipative", choices=["yes", "no"], default="yes")
+            command.add_argument("--top", choices=["ramp", "servo"], default="ramp")
         if name == "mpi":
             command.add_argument("--mpirun", required=True)
             command.add_argument("--mpirun-flag", action="append", default=[])
+    wall = sub.add_parser("wall")
+    wall.add_argument("--ellc", required=True)
+    wall.add_argument("--lmp", required=True)
+    wall.add_argument("--cases", type=int, default=8)
+    wall.add_argument("--seed", type=int, default=2026)
+    wall.add_argument("--tolerance", type=float, default=1e-9)
+    contacts = sub.add_parser("contacts")
+    contacts.add_argument("--lmp", required=True)
+    contacts.add_argument("--input", required=True)
+    contacts.add_argument("--steps", default="100")
+    contacts.add_argument("--tolerance", type=float, default=1e-10)
+    contacts.add_argument("--mpirun", default="")
+    contacts.add_argument("--mpirun-flag", action="append", default=[])
+    contacts.add_argument("--np", type=int, default=1)
+    for name in ("export", "engines"):
+        command = sub.add_parser(name)
+        command.add_argument("--ellc", required=True)
+        command.add_argument("--lmp", required=True)
+        command.add_argument("--scenario", required=True)
+        command.add_argument("--mpirun", default="")
+        command.add_argument("--mpirun-flag", action="append", default=[])
+        if name == "export":
+            command.add_argument("--target", required=True, help="the scenario's target pressure, MPa")
+        else:
+            command.add_argument("--seeds", type=int, default=6)
+            command.add_argument("--tolerance", type=float, default=2.0, help="in seed spreads (sd)")
     args = parser.parse_args()
-    {"curve": check_curve, "mpi": check_mpi, "restart": check_restart}[args.check](args)
+    {"export": check_export, "engines": check_engines, "contacts": check_contacts, "curve": check_curve, "mpi": check_mpi, "restart": check_restart, "wall": check_wall}[args.check](args)
 
 
 if __name__ == "__main__":

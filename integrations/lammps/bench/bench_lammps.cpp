@@ -45,11 +45,11 @@ struct Session {
   }
 };
 
-std::vector<std::string> lattice(const std::string& atom_style) {
+std::vector<std::string> lattice(const std::string& atom_style, const std::string& boundary = "p p p") {
   const std::string n = std::to_string(kCells);
   return {"units micro",
           "atom_style " + atom_style,
-          "boundary p p p",
+          "boundary " + boundary,
           "lattice sc 9.0",
           "region box block 0 " + n + " 0 " + n + " 0 " + n,
           "create_box 1 box",
@@ -70,8 +70,8 @@ void report(benchmark::State& state, double contacts_per_particle) {
 // Builds the packing with `setup`, settles it for 200 steps, then times kStepsPerIteration steps
 // per benchmark iteration.
 void time_steps(benchmark::State& state, const Session& session, const std::string& atom_style,
-                const std::vector<std::string>& setup) {
-  auto commands = lattice(atom_style);
+                const std::vector<std::string>& setup, const std::string& boundary = "p p p") {
+  auto commands = lattice(atom_style, boundary);
   commands.insert(commands.end(), setup.begin(), setup.end());
   commands.emplace_back("run 200");
   session.run(commands);
@@ -90,6 +90,37 @@ void EllipsoidBK(benchmark::State& state) {
   report(state, 2.0 * static_cast<double>(pair->touching_pairs()) / (kCells * kCells * kCells));
 }
 
+// The same with the built-in engine's narrow-phase setting (one Newton step of the common normal
+// per time step from the warm start, narrow_phase_final_step 1e-3, as `ellc export-lammps`
+// writes it) instead of LAMMPS's default solve to rounding.
+void EllipsoidBKEngineSolve(benchmark::State& state) {
+  const Session session;
+  time_steps(
+      state, session, "ellipsoid",
+      {"set type 1 shape 12 10 8.4", "set type 1 quat/random 4711", "set type 1 density 4.7", "pair_style ellipsoid/bk",
+       "pair_coeff 1 1 1.42e8 0.25 7.9e6 friction 0.3 damping 0.1 tangential_damping 0.1 "
+       "narrow_phase_final_step 1e-3",
+       "fix integrate all nve/asphere"});
+  const auto* pair = dynamic_cast<const ellc_lammps::PairEllipsoidBK*>(session.lmp->force->pair);
+  report(state, 2.0 * static_cast<double>(pair->touching_pairs()) / (kCells * kCells * kCells));
+}
+
+// The same packing between the two planes of fix wall/ellipsoid/bk (z not periodic): the lattice
+// spans z = 0 … 81 µm, the planes at −4.5 and 85.5 µm press the bottom and top layers (≈ 200 of
+// the 1000 particles touch a plane). Against EllipsoidBK it gives the cost of the wall contacts.
+void EllipsoidBKWalls(benchmark::State& state) {
+  const Session session;
+  time_steps(state, session, "ellipsoid",
+             {"set type 1 shape 12 10 8.4", "set type 1 quat/random 4711", "set type 1 density 4.7",
+              "change_box all z final -10 95 units box", "pair_style ellipsoid/bk",
+              "pair_coeff 1 1 1.42e8 0.25 7.9e6 friction 0.3 damping 0.1 tangential_damping 0.1",
+              "fix walls all wall/ellipsoid/bk zplane -4.5 85.5 material particle friction 0.3",
+              "fix integrate all nve/asphere"},
+             "p p f");
+  const auto* pair = dynamic_cast<const ellc_lammps::PairEllipsoidBK*>(session.lmp->force->pair);
+  report(state, 2.0 * static_cast<double>(pair->touching_pairs()) / (kCells * kCells * kCells));
+}
+
 void GranularHertzMaterial(benchmark::State& state) {
   const Session session;
   time_steps(state, session, "sphere",
@@ -104,6 +135,8 @@ void GranularHertzMaterial(benchmark::State& state) {
 }
 
 BENCHMARK(EllipsoidBK)->Unit(benchmark::kMillisecond);
+BENCHMARK(EllipsoidBKEngineSolve)->Unit(benchmark::kMillisecond);
+BENCHMARK(EllipsoidBKWalls)->Unit(benchmark::kMillisecond);
 BENCHMARK(GranularHertzMaterial)->Unit(benchmark::kMillisecond);
 
 }  // namespace

@@ -1,4 +1,5 @@
 #include "ellc/scenario/packing.hpp"
+#include "ellc/scenario/packing_import.hpp"
 
 #include <algorithm>
 #include <array>
@@ -100,6 +101,7 @@ class InsertionGrid {
 }  // namespace
 
 ParticleSet generate_packing(const PackingSpec& spec, const Box& box, double floor, const OverlapTest& overlap) {
+  if (!spec.file.empty()) return import_packing(spec.file, spec.density, box);
   std::vector<Candidate> drawn = draw_particles(spec);
   ParticleSet particles;
   if (drawn.empty()) return particles;

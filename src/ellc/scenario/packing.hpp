@@ -6,6 +6,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <string>
 
 #include "ellc/engine/particles.hpp"
 #include "ellc/engine/settings.hpp"
@@ -22,6 +23,10 @@ struct PackingSpec {
   std::uint64_t seed = 1;
   double density = 4.7e-3;           // ng/µm³, after mass scaling
   double insertion_fraction = 0.25;  // solid fraction the insertion region is first sized for
+  // `[packing] file`: the particles come from this file instead (packing_import.hpp); the fields
+  // above then describe it (count, mean r̂, spheres) and this is its largest semi-axis.
+  std::string file;
+  double imported_bounding_radius = 0.0;
 };
 
 // Overlap test for insertion; the default compares bounding spheres.
@@ -29,7 +34,8 @@ using OverlapTest = std::function<bool(const Eigen::Vector3d& axes_a, const Eige
                                        const Eigen::Quaterniond& rotation_a, const Eigen::Vector3d& axes_b,
                                        const Eigen::Vector3d& centre_b, const Eigen::Quaterniond& rotation_b)>;
 
-// Particles with ids 0..N−1, all above z = floor (clear of it by their bounding radius).
+// Particles with ids 0..N−1, all above z = floor (clear of it by their bounding radius); or, when
+// spec.file is set, the particles of that file (import_packing).
 [[nodiscard]] engine::ParticleSet generate_packing(const PackingSpec& spec, const engine::Box& box, double floor,
                                                    const OverlapTest& overlap = {});
 

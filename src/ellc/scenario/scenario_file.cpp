@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <limits>
 #include <sstream>
@@ -14,6 +15,7 @@
 #include "ellc/io/table_reader.hpp"
 #include "ellc/material/material.hpp"
 #include "ellc/scenario/ensemble.hpp"
+#include "ellc/scenario/packing_import.hpp"
 #include "ellc/scenario/scenario.hpp"
 
 namespace ellc::scenario {
@@ -21,6 +23,7 @@ namespace ellc::scenario {
 using engine::ContactSettings;
 
 double largest_bounding_radius(const PackingSpec& spec) noexcept {
+  if (!spec.file.empty()) return spec.imported_bounding_radius;
   const double radius = spec.mean_radius * (1.0 + 2.0 * spec.radius_spread);
   if (spec.spheres) return radius;
   // Semi-axes r̂ (1, q1, q2) / (q1 q2)^{1/3}; the largest is reached at a corner of the range.
@@ -112,7 +115,30 @@ void read_walls(TableReader& table, const toml::node* material, bool contact_gav
   table.finish();
 }
 
+// [packing] file = "...": the particles of a file (packing_import.hpp), relative to the scenario;
+// only density (and seed, unused) go with it.
+void read_packing_file(TableReader& table, Scenario& scenario) {
+  PackingSpec& spec = scenario.packing;
+  const std::filesystem::path given = *table.optional_string("file");
+  spec.file = (given.is_absolute() ? given : std::filesystem::path(scenario.source).parent_path() / given).string();
+  scenario.material_density = table.positive("density");
+  spec.seed = static_cast<std::uint64_t>(table.integer_at_least("seed", 0, 1));
+  table.finish();
+  const engine::ParticleSet particles = import_packing(spec.file, 1.0, scenario.box);  // geometry only
+  spec.count = particles.size();
+  spec.mean_radius = 0.0;
+  for (std::size_t k = 0; k < particles.size(); ++k) {
+    spec.mean_radius += particles.mean_radius[k] / static_cast<double>(particles.size());
+    spec.imported_bounding_radius = std::max(spec.imported_bounding_radius, particles.bounding_radius[k]);
+  }
+  spec.spheres = particles.all_spheres();
+}
+
 void read_packing(TableReader& table, Scenario& scenario) {
+  if (table.has("file")) {
+    read_packing_file(table, scenario);
+    return;
+  }
   PackingSpec& spec = scenario.packing;
   spec.count = static_cast<std::size_t>(table.integer_at_least("count", 1));
   if (spec.count > 50'000'000) table.fail("count", std::to_string(spec.count), "at most 50000000 particles");
