@@ -41,7 +41,7 @@ PHASES = tuple(_ellc._phase_names())  # settle, load, hold, unload, relax, done
 REGIMES = ("separated", "elastic", "elastic_plastic", "fully_plastic", "unloading")  # ellc.Regime codes 0..4
 
 __all__ = ["Scenario", "Run", "Particles", "Contacts", "RunFinished", "RunFailed", "InputError", "PHASES",
-           "REGIMES", "to_toml"]
+           "REGIMES", "to_toml", "read_timeseries"]
 
 
 class RunFinished(RuntimeError):

@@ -185,6 +185,17 @@ def test_contacts_are_consistent(whole):
     assert run.summary()["finished"] is True and run.summary()["particles"] == N
 
 
+def test_cli_figure_from_the_run_arrays(whole, tmp_path):
+    from ellc import plots
+    run, _ = whole
+    series = run.timeseries()
+    figure = plots.dem_figure(*(series[name] for name in ("thickness", "plate_pressure", "phase", "time",
+                                                           "kinetic_energy", "plastic_dissipation")),
+                              energies={name: series[name] for name in plots.ENERGY_COLUMNS})
+    figure.savefig(tmp_path / "pressure_thickness.png")
+    assert (tmp_path / "pressure_thickness.png").stat().st_size > 0
+
+
 # ------------------------------------------------------------------------------------------------
 # Progress, callbacks, the GIL
 # ------------------------------------------------------------------------------------------------
