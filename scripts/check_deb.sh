@@ -12,7 +12,7 @@
 #    `apt-get install --no-install-recommends ./ellc_*.deb` (the Depends alone), then these must work:
 #      ellc --help; ellc --version (plots from /usr/lib/python3/dist-packages);
 #      ellc curve /usr/share/ellc/examples/paper_case2.toml -o case2.csv --plot case2.png;
-#      python3: import ellc (the compiled module), paper case 2 = the CSV, ellc.plots on arrays;
+#      python3: import ellc (the compiled module), paper case 2 = the CSV, ellc.plots on arrays, ellc.dem steps;
 #      lmp_ellc -h, and lmp_ellc on the installed examples/lammps/in.two_particle_case2.
 #    Then the Recommends (Eigen and toml++ headers, pkg-config) and g++, and the same checks
 #    plus tests/downstream/consumer/paper_case2.cpp built with $(pkg-config --cflags --libs ellc)
@@ -95,7 +95,12 @@ with open("case2.csv", newline="") as handle:
 assert np.allclose(force, reference, rtol=1e-12, atol=0.0), "force differs from ellc curve"
 c = contact.constants
 plots.curve_figure(path / c.yield_overlap, force / c.yield_force).savefig("from_arrays.png")
-print(f"import ellc: {ellc.__file__}; paper case 2 = ellc curve over {len(path)} points; plot from arrays drawn")
+scenario = ellc.dem.Scenario.from_file(os.path.join(os.environ["ELLC_EXAMPLES"], "calendering_quick.toml"))
+run = ellc.dem.Run(scenario.with_changes({"packing": {"count": 10}}), write_files=False)
+run.run(50)
+assert run.step == 50 and run.particles.position.shape == (10, 3) and np.isfinite(run.particles.position).all()
+print(f"import ellc: {ellc.__file__}; paper case 2 = ellc curve over {len(path)} points; plot from arrays drawn; "
+      f"ellc.dem stepped 10 particles")
 PY
 echo "-- lmp_ellc -h; lmp_ellc -in .../examples/lammps/in.two_particle_case2"
 lmp_ellc -h | sed -n '2p'

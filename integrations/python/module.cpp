@@ -1,6 +1,7 @@
 // ellc._ellc: the Becker–Kamlah contact law, Hertz and geometry layers of libellc for Python.
 // Names follow the C++ library in snake_case; docs/python.md is the guide.
 
+#include "bind_dem.hpp"
 #include "bindings.hpp"
 
 #include "ellc/io/input_error.hpp"
@@ -38,6 +39,7 @@ PYBIND11_MODULE(_ellc, module) {
   ellc::python::bind_law(module);
   ellc::python::bind_cases(module);
   ellc::python::bind_geometry(module);
+  ellc::python::bind_dem(module);
 #ifdef ELLC_PYTHON_CALIBRATION
   ellc::python::bind_calibration(module);
 #endif

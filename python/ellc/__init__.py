@@ -14,6 +14,8 @@ Quick start::
     contact = ellc.Contact.between(body_i, body_j)
     path = np.concatenate([np.linspace(0, 2, 100), np.linspace(2, 0, 100)])
     result = contact.evaluate_path(path)      # numpy arrays: force, max_overlap, plastic_overlap, regime
+
+The DEM engine of ``ellc dem``: ``ellc.dem`` (scenarios, staged runs, state as numpy arrays).
 """
 
 # The compiled module may sit in another `ellc` folder on sys.path (the build tree) than these
@@ -28,6 +30,9 @@ try:
     HAVE_CORE = True
 except ImportError:  # plots only; the bindings are not built or not on the path
     HAVE_CORE = False
+
+if HAVE_CORE:
+    from ellc import dem  # noqa: E402,F401  (the DEM engine: ellc.dem.Scenario, ellc.dem.Run)
 
 
 def calibrate_files(data, hertz="hale", **options):

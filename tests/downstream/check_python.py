@@ -7,7 +7,8 @@ Runs in a fresh temporary folder (outside the source and build trees) and checks
 * ``ellc`` and its compiled ``ellc._ellc`` are imported from the prefix, nothing from SOURCE_DIR;
 * paper case 2, built from its numbers, gives the force column of CURVE.csv (``ellc curve
   examples/paper_case2.toml -o CURVE.csv``) along the same path to 1e-12 relative;
-* ``ellc.figures`` and ``ellc.plots`` draw from numpy arrays (the figures of the CLI's plots).
+* ``ellc.figures`` and ``ellc.plots`` draw from numpy arrays (the figures of the CLI's plots);
+* ``ellc.dem`` builds a scenario from a dict and steps it.
 ``-P`` keeps the folder of this script off ``sys.path``.
 """
 
@@ -62,6 +63,15 @@ def main(package_root, curve_csv, source_dir):
         axes = figures.plot_normalized_force(overlap, force, constants.yield_overlap, constants.yield_force)
         axes.figure.savefig(os.path.join(scratch, "case2.png"))
         assert os.path.getsize(os.path.join(scratch, "case2.png")) > 0
+        # ellc.dem: a scenario from a dict, a few steps, the state as arrays.
+        scenario = {"material": {"youngs_modulus": 142000.0, "poisson_ratio": 0.25, "yield_stress": 7900.0},
+                    "box": {"size": [42.0, 42.0]}, "packing": {"count": 10, "seed": 3},
+                    "time": {"mass_scaling": 1e4}, "settle": {"time": 0.0},
+                    "calendering": {"target_pressure": 50.0}}
+        run = ellc.dem.Run(scenario, write_files=False)
+        run.run(50)
+        assert run.step == 50 and run.particles.position.shape == (10, 3), run
+        assert np.isfinite(run.particles.position).all()
         print(f"ellc {ellc.__file__}: paper case 2 over {len(overlap)} points equals ellc curve "
               f"(max relative difference {worst:.2g}); figure drawn")
     finally:

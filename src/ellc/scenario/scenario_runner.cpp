@@ -98,8 +98,12 @@ void ScenarioRunner::enter(Phase phase) {
   protocol_.enter(*simulation_, phase);
 }
 
-void ScenarioRunner::advance(std::uint64_t max_steps) {
-  for (std::uint64_t taken = 0; taken < max_steps && !done(); ++taken) {
+void ScenarioRunner::advance(std::uint64_t max_steps) { advance(max_steps, {}); }
+
+std::uint64_t ScenarioRunner::advance(std::uint64_t max_steps, const std::function<bool(const ScenarioRunner&)>& stop) {
+  std::uint64_t taken = 0;
+  while (taken < max_steps && !done()) {
+    ++taken;
     try {
       simulation_->step();
     } catch (const RunawayError& error) {
@@ -127,8 +131,10 @@ void ScenarioRunner::advance(std::uint64_t max_steps) {
     if (next) enter(*next);
     if (outputs_.after_step(*simulation_, protocol_.state().phase, done(), ledger_))
       write_checkpoint(outputs_.file("checkpoint.bin"));
+    if (stop && stop(*this)) break;
   }
   outputs_.flush();
+  return taken;
 }
 
 void ScenarioRunner::write_checkpoint(const std::string& path) const {

@@ -5,6 +5,7 @@
 // checkpoint, so a restarted run continues exactly where the interrupted one stood.
 
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -37,6 +38,10 @@ class ScenarioRunner {
   // Runs at most `max_steps` steps, or until the protocol is done. On a runaway particle it
   // writes checkpoint_failure.bin and rethrows.
   void advance(std::uint64_t max_steps);
+  // The same, and stops early after the first step at which `stop` returns true (the Python
+  // module's run_until: a phase, a time). Returns the number of steps taken. Staged runs equal
+  // one run: the step, the outputs and the checkpoints do not depend on where a call ends.
+  std::uint64_t advance(std::uint64_t max_steps, const std::function<bool(const ScenarioRunner&)>& stop);
   [[nodiscard]] bool done() const noexcept { return protocol_.done(); }
 
   [[nodiscard]] const engine::Simulation& simulation() const noexcept { return *simulation_; }
