@@ -115,9 +115,11 @@ TEST(Tortuosity, SimpleCubicArrayOfSpheresMatchesRayleigh) {
       EXPECT_LT(errors.back(), voxels == 24 ? 0.03 : 0.015) << "f = " << fraction << ", " << voxels << " voxels";
       // τ = ε / σ_e = 1 + f/2 to the same order.
       EXPECT_NEAR(result.tortuosity, result.porosity / expected, 0.03 * result.tortuosity);
-      std::printf("f = %.2f, %d voxels per cell: D_eff = %.5f, Maxwell-Rayleigh %.5f (rel. error %.2e), tau = %.5f, %d iterations\n",
-                  fraction, voxels, result.effective_diffusivity, expected, errors.back(), result.tortuosity,
-                  result.iterations);
+      std::printf(
+          "f = %.2f, %d voxels per cell: D_eff = %.5f, Maxwell-Rayleigh %.5f (rel. error %.2e), tau = %.5f, %d "
+          "iterations\n",
+          fraction, voxels, result.effective_diffusivity, expected, errors.back(), result.tortuosity,
+          result.iterations);
     }
     EXPECT_LT(errors[1], 0.75 * errors[0]) << "first order: 24/40 = 0.6 of the error at 24 voxels";
   }
@@ -127,7 +129,7 @@ TEST(Tortuosity, SameBitsOnOneThreadAsOnTwo) {
 #ifdef _OPENMP
   const Packing packing = test::random_ellipsoids(10, 12.0, 21);
   Resolution resolution;
-  resolution.spacing = 0.4;
+  resolution.spacing = 0.25;  // 48³ voxels: above the size from which the sweeps use threads
   const VoxelGrid grid = voxelise(packing, resolution);
   const int threads = omp_get_max_threads();
   omp_set_num_threads(1);

@@ -24,7 +24,8 @@ TEST(Voxelise, EveryVoxelAgreesWithTheExactInsideTest) {
   for (int iz = 0; iz < grid.shape[2]; ++iz)
     for (int iy = 0; iy < grid.shape[1]; ++iy)
       for (int ix = 0; ix < grid.shape[0]; ++ix) {
-        const Eigen::Vector3d centre = grid.origin + (Eigen::Vector3d(ix, iy, iz).array() + 0.5).matrix().cwiseProduct(grid.spacing);
+        const Eigen::Vector3d centre =
+            grid.origin + (Eigen::Vector3d(ix, iy, iz).array() + 0.5).matrix().cwiseProduct(grid.spacing);
         bool inside = false;
         bool on_surface = false;  // to rounding: either answer is exact
         for (std::size_t p = 0; p < packing.size() && !inside && !on_surface; ++p) {

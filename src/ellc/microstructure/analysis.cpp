@@ -1,5 +1,6 @@
 #include "ellc/microstructure/analysis.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <filesystem>
@@ -62,8 +63,8 @@ AnalysisReport analyse(const Packing& packing, const AnalysisOptions& options, c
 void write_analysis_summary(std::ostream& out, const AnalysisReport& report) {
   const VoxelGrid& grid = report.grid;
   out << "particles = " << report.particles << "\ncontacts = " << report.contacts
-      << "\nvoxel_size_um = " << format_number(report.spacing) << "\ngrid = " << grid.shape[0] << " x "
-      << grid.shape[1] << " x " << grid.shape[2] << "\ngrid_spacing_um = " << format_number(grid.spacing.x()) << ' '
+      << "\nvoxel_size_um = " << format_number(report.spacing) << "\ngrid = " << grid.shape[0] << " x " << grid.shape[1]
+      << " x " << grid.shape[2] << "\ngrid_spacing_um = " << format_number(grid.spacing.x()) << ' '
       << format_number(grid.spacing.y()) << ' ' << format_number(grid.spacing.z())
       << "\nvoxelise_seconds = " << format_number(report.voxelise_seconds)
       << "\nporosity_analytic = " << format_number(report.porosity_analytic)
@@ -79,8 +80,9 @@ void write_analysis_summary(std::ostream& out, const AnalysisReport& report) {
   };
   for (const auto& result : report.tortuosity) write(result, "");
   if (report.coarse_spacing > 0.0) {
-    out << "coarse_voxel_size_um = " << format_number(report.coarse_spacing) << "\ncoarse_grid = "
-        << report.coarse_shape[0] << " x " << report.coarse_shape[1] << " x " << report.coarse_shape[2] << '\n';
+    out << "coarse_voxel_size_um = " << format_number(report.coarse_spacing)
+        << "\ncoarse_grid = " << report.coarse_shape[0] << " x " << report.coarse_shape[1] << " x "
+        << report.coarse_shape[2] << '\n';
     for (const auto& result : report.tortuosity_coarse) write(result, "_coarse");
   }
 }

@@ -20,7 +20,7 @@ namespace ellc::microstructure {
 struct AnalysisOptions {
   Resolution resolution;
   std::array<bool, 3> tortuosity_axes{true, true, true};  // x, y, z
-  double coarse_factor = 2.0;  // the resolution check: τ again at this × the spacing (≤ 1: none)
+  double coarse_factor = 2.0;   // the resolution check: τ again at this × the spacing (≤ 1: none)
   double slab_thickness = 0.0;  // µm; 0 → half the mean particle radius (abc)^(1/3)
   int pore_size_radii = 24;
   DiffusionOptions diffusion;
@@ -29,8 +29,8 @@ struct AnalysisOptions {
 struct AnalysisReport {
   std::size_t particles = 0;
   std::size_t contacts = 0;
-  double spacing = 0.0;  // the requested voxel size, µm
-  VoxelGrid grid;        // the voxelised solid
+  double spacing = 0.0;            // the requested voxel size, µm
+  VoxelGrid grid;                  // the voxelised solid
   double porosity_analytic = 0.0;  // 1 − Σ particle volumes / box volume (overlaps counted twice)
   double porosity_voxels = 0.0;
   double voxelise_seconds = 0.0;

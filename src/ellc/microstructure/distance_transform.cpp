@@ -37,7 +37,8 @@ struct LinePass {
       while (hull >= 0) {
         const int p = v[static_cast<std::size_t>(hull)];
         const double dp = static_cast<double>(p);
-        const double s = ((fq + h2 * dq * dq) - (f[static_cast<std::size_t>(p)] + h2 * dp * dp)) / (2.0 * h2 * (dq - dp));
+        const double s =
+            ((fq + h2 * dq * dq) - (f[static_cast<std::size_t>(p)] + h2 * dp * dp)) / (2.0 * h2 * (dq - dp));
         if (s <= z[static_cast<std::size_t>(hull)]) {
           --hull;
           continue;
@@ -86,7 +87,7 @@ std::vector<double> squared_distance_transform(const std::vector<std::uint8_t>& 
     const std::size_t a = static_cast<std::size_t>(axis);
     const std::size_t n = a == 0 ? nx : (a == 1 ? ny : nz);
     const std::size_t lines = grid.size() / n;
-#pragma omp parallel
+#pragma omp parallel if (grid.size() >= (std::size_t{1} << 16))
     {
       LinePass pass;
       std::vector<double> line(n);
@@ -94,9 +95,12 @@ std::vector<double> squared_distance_transform(const std::vector<std::uint8_t>& 
       for (std::size_t l = 0; l < lines; ++l) {
         // The start of line l: the index with the axis coordinate 0.
         std::size_t start = 0;
-        if (a == 0) start = l * nx;
-        else if (a == 1) start = (l % nx) + (l / nx) * nx * ny;
-        else start = l;
+        if (a == 0)
+          start = l * nx;
+        else if (a == 1)
+          start = (l % nx) + (l / nx) * nx * ny;
+        else
+          start = l;
         for (std::size_t p = 0; p < n; ++p) line[p] = distance[start + p * stride[a]];
         pass.run(line.data(), distance.data() + start, static_cast<int>(n), stride[a], grid.spacing[axis],
                  grid.periodic[a]);
@@ -142,7 +146,8 @@ PoreSizeDistribution continuous_pore_size_distribution(const VoxelGrid& grid, in
   psd.cumulative_fraction.insert(psd.cumulative_fraction.begin(), 1.0);
   psd.density.assign(psd.radius.size(), 0.0);
   for (std::size_t k = 1; k < psd.radius.size(); ++k)
-    psd.density[k] = (psd.cumulative_fraction[k - 1] - psd.cumulative_fraction[k]) / (psd.radius[k] - psd.radius[k - 1]);
+    psd.density[k] =
+        (psd.cumulative_fraction[k - 1] - psd.cumulative_fraction[k]) / (psd.radius[k] - psd.radius[k - 1]);
   for (std::size_t k = 1; k < psd.radius.size(); ++k)
     if (psd.cumulative_fraction[k] <= 0.5) {
       const double v0 = psd.cumulative_fraction[k - 1];

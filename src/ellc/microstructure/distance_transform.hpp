@@ -25,7 +25,7 @@ namespace ellc::microstructure {
                                                              const VoxelGrid& grid);
 
 struct PoreSizeDistribution {
-  std::vector<double> radius;              // µm, ascending
+  std::vector<double> radius;               // µm, ascending
   std::vector<double> cumulative_fraction;  // V(r): pore fraction coverable by spheres of radius r
   std::vector<double> density;              // −dV/dr between neighbouring radii (1/µm), at radius[k]
   double median_radius = 0.0;               // r₅₀: V(r₅₀) = ½ (linear interpolation)

@@ -24,8 +24,8 @@ void check_written(const std::ofstream& out, const std::string& path) {
 
 void write_vti(const std::string& path, const VoxelGrid& grid) {
   std::ofstream out = open_for_writing(path, true);
-  const std::string extent =
-      "0 " + std::to_string(grid.shape[0]) + " 0 " + std::to_string(grid.shape[1]) + " 0 " + std::to_string(grid.shape[2]);
+  const std::string extent = "0 " + std::to_string(grid.shape[0]) + " 0 " + std::to_string(grid.shape[1]) + " 0 " +
+                             std::to_string(grid.shape[2]);
   out << "<?xml version=\"1.0\"?>\n"
       << "<VTKFile type=\"ImageData\" version=\"1.0\" byte_order=\"LittleEndian\" header_type=\"UInt64\">\n"
       << "  <ImageData WholeExtent=\"" << extent << "\" Origin=\"" << grid.origin.x() << ' ' << grid.origin.y() << ' '

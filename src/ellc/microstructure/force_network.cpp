@@ -21,7 +21,8 @@ ForceDistribution normal_force_distribution(const std::vector<ContactRecord>& co
   distribution.counts.assign(bins, 0);
   for (const ContactRecord& contact : contacts)
     if (contact.normal_force > 0.0) {
-      const auto bin = std::min(bins - 1, static_cast<std::size_t>(contact.normal_force / distribution.mean_force / bin_width));
+      const auto bin =
+          std::min(bins - 1, static_cast<std::size_t>(contact.normal_force / distribution.mean_force / bin_width));
       ++distribution.counts[bin];
     }
   for (std::size_t k = 0; k < bins; ++k) {

@@ -10,9 +10,9 @@
 namespace ellc::microstructure {
 
 struct ForceDistribution {
-  double mean_force = 0.0;  // ⟨f⟩ over the contacts with f > 0, µN
-  std::size_t contacts = 0;  // contacts with f > 0
-  std::vector<double> bin_low;   // f/⟨f⟩
+  double mean_force = 0.0;      // ⟨f⟩ over the contacts with f > 0, µN
+  std::size_t contacts = 0;     // contacts with f > 0
+  std::vector<double> bin_low;  // f/⟨f⟩
   std::vector<double> bin_high;
   std::vector<double> density;  // PDF of f/⟨f⟩: Σ density × width = 1
   std::vector<long> counts;

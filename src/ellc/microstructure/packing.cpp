@@ -37,8 +37,8 @@ void validate_packing(const Packing& packing, const std::string& source) {
   const std::size_t count = packing.size();
   if (packing.semi_axes.size() != count || packing.orientations.size() != count)
     throw InputError(source, "particles",
-                     std::to_string(count) + " centres, " + std::to_string(packing.semi_axes.size()) +
-                         " semi-axes, " + std::to_string(packing.orientations.size()) + " orientations",
+                     std::to_string(count) + " centres, " + std::to_string(packing.semi_axes.size()) + " semi-axes, " +
+                         std::to_string(packing.orientations.size()) + " orientations",
                      "as many semi-axes and orientations as centres");
   const PackingBox& box = packing.box;
   if (!box.lower.allFinite() || !box.upper.allFinite() || !(box.upper.array() > box.lower.array()).all())
@@ -57,8 +57,8 @@ void validate_packing(const Packing& packing, const std::string& source) {
     }
     const Eigen::Quaterniond& q = packing.orientations[row];
     if (!q.coeffs().allFinite() || q.norm() == 0.0)
-      throw InputError(source, name + " quaternion",
-                       format_number(q.w()) + " " + vector_text(q.vec()), "a finite, non-zero quaternion");
+      throw InputError(source, name + " quaternion", format_number(q.w()) + " " + vector_text(q.vec()),
+                       "a finite, non-zero quaternion");
   }
   for (std::size_t k = 0; k < packing.contacts.size(); ++k) {
     const ContactRecord& contact = packing.contacts[k];
@@ -244,9 +244,9 @@ void write_packing_file(const std::string& path, const Packing& packing) {
     const auto flag = [](bool b) { return b ? "true" : "false"; };
     out << "# ellc packing (docs/microstructure.md, \"Packing files\")\n"
         << "# box_lower = " << packing.box.lower.x() << ' ' << packing.box.lower.y() << ' ' << packing.box.lower.z()
-        << "\n# box_upper = " << packing.box.upper.x() << ' ' << packing.box.upper.y() << ' '
-        << packing.box.upper.z() << "\n# periodic = " << flag(packing.box.periodic[0]) << ' '
-        << flag(packing.box.periodic[1]) << ' ' << flag(packing.box.periodic[2]) << "\nx,y,z,a,b,c,qw,qx,qy,qz\n";
+        << "\n# box_upper = " << packing.box.upper.x() << ' ' << packing.box.upper.y() << ' ' << packing.box.upper.z()
+        << "\n# periodic = " << flag(packing.box.periodic[0]) << ' ' << flag(packing.box.periodic[1]) << ' '
+        << flag(packing.box.periodic[2]) << "\nx,y,z,a,b,c,qw,qx,qy,qz\n";
     for (std::size_t k = 0; k < packing.size(); ++k) {
       const auto& c = packing.centres[k];
       const auto& s = packing.semi_axes[k];

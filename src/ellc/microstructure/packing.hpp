@@ -28,7 +28,7 @@ struct PackingBox {
 struct ContactRecord {
   std::uint32_t i = 0;
   std::uint32_t j = 0;
-  Eigen::Vector3d point = Eigen::Vector3d::Zero();  // contact point (world), for the height profiles
+  Eigen::Vector3d point = Eigen::Vector3d::Zero();     // contact point (world), for the height profiles
   Eigen::Vector3d centre_j = Eigen::Vector3d::Zero();  // centre of j's image that touches i (periodic boxes)
   double normal_force = 0.0;                           // µN, > 0 pushes the bodies apart
   double max_overlap = 0.0;                            // δ_*, µm
@@ -37,8 +37,8 @@ struct ContactRecord {
 
 struct Packing {
   std::vector<Eigen::Vector3d> centres;
-  std::vector<Eigen::Vector3d> semi_axes;             // (a, b, c) along the body axes
-  std::vector<Eigen::Quaterniond> orientations;       // body → world
+  std::vector<Eigen::Vector3d> semi_axes;        // (a, b, c) along the body axes
+  std::vector<Eigen::Quaterniond> orientations;  // body → world
   PackingBox box;
   std::vector<ContactRecord> contacts;  // may be empty: no contact profile or force network then
 

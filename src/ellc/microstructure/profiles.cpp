@@ -36,8 +36,10 @@ HeightProfile height_profile(const Packing& packing, int slabs, const VoxelGrid*
     for (int image = -images; image <= images; ++image) {
       const double zc = packing.centres[p].z() + image * height;
       if (zc + half_height <= z0 || zc - half_height >= z0 + height) continue;
-      const auto first = static_cast<std::size_t>(std::clamp<long>(static_cast<long>(std::floor((zc - half_height - z0) / dz)), 0, count - 1));
-      const auto last = static_cast<std::size_t>(std::clamp<long>(static_cast<long>(std::floor((zc + half_height - z0) / dz)), 0, count - 1));
+      const auto first = static_cast<std::size_t>(
+          std::clamp<long>(static_cast<long>(std::floor((zc - half_height - z0) / dz)), 0, count - 1));
+      const auto last = static_cast<std::size_t>(
+          std::clamp<long>(static_cast<long>(std::floor((zc + half_height - z0) / dz)), 0, count - 1));
       for (std::size_t k = first; k <= last; ++k)
         solid[k] += volume_below(volume, (profile.z_high[k] - zc) / half_height) -
                     volume_below(volume, (profile.z_low[k] - zc) / half_height);
@@ -51,7 +53,8 @@ HeightProfile height_profile(const Packing& packing, int slabs, const VoxelGrid*
     const std::size_t layer = static_cast<std::size_t>(grid->shape[0]) * static_cast<std::size_t>(grid->shape[1]);
     for (int iz = 0; iz < grid->shape[2]; ++iz) {
       const double zc = grid->origin.z() + (iz + 0.5) * grid->spacing.z();
-      const auto k = static_cast<std::size_t>(std::clamp<long>(static_cast<long>(std::floor((zc - z0) / dz)), 0, count - 1));
+      const auto k =
+          static_cast<std::size_t>(std::clamp<long>(static_cast<long>(std::floor((zc - z0) / dz)), 0, count - 1));
       std::size_t filled = 0;
       for (std::size_t v = static_cast<std::size_t>(iz) * layer; v < static_cast<std::size_t>(iz + 1) * layer; ++v)
         filled += grid->solid[v];

@@ -10,6 +10,7 @@ namespace ellc::microstructure {
 namespace {
 
 constexpr std::array<char, 3> kAxisName{'x', 'y', 'z'};
+constexpr std::size_t kParallelVoxels = std::size_t{1} << 16;
 
 double harmonic_mean(double a, double b) noexcept { return a > 0.0 && b > 0.0 ? 2.0 * a * b / (a + b) : 0.0; }
 
@@ -109,8 +110,8 @@ DiffusionResult solve_diffusion(const VoxelGrid& grid, const std::vector<double>
     }
     result.conducting_fraction = static_cast<double>(count) / static_cast<double>(size);
     if (count == 0) {
-      result.reason = "no pore path connects " + faces + " (the pore phase does not percolate along " +
-                      kAxisName[a] + " at this resolution)";
+      result.reason = "no pore path connects " + faces + " (the pore phase does not percolate along " + kAxisName[a] +
+                      " at this resolution)";
       return result;
     }
   }
@@ -120,11 +121,13 @@ DiffusionResult solve_diffusion(const VoxelGrid& grid, const std::vector<double>
   const std::array<double, 3> conductance{h.y() * h.z() / h.x(), h.x() * h.z() / h.y(), h.x() * h.y() / h.z()};
   const double boundary = 2.0 * conductance[a];  // face voxel to its face: half a voxel
   const auto slices = static_cast<std::size_t>(n[2]);
+  // Threads only for grids worth a fork/join per sweep (the sums are per slice either way).
+  const bool parallel = size >= kParallelVoxels;
   std::vector<double> slice_sums(slices);
   // Calls visit(k, at) for every active voxel, slice by slice in parallel; each slice writes its
   // own partial sum (visit's return value), summed afterwards in slice order: deterministic.
   const auto reduce = [&](const auto& visit) {
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (parallel)
     for (int i2 = 0; i2 < n[2]; ++i2) {
       double sum = 0.0;
       for (int i1 = 0; i1 < n[1]; ++i1)
@@ -147,6 +150,7 @@ DiffusionResult solve_diffusion(const VoxelGrid& grid, const std::vector<double>
   std::vector<double> r(size, 0.0);
   std::vector<double> p(size, 0.0);
   std::vector<double> q(size, 0.0);
+  // The stopping test is on the preconditioned residual: r·D⁻¹r ≤ tol² b·D⁻¹b.
   const double b_norm2 = reduce([&](std::size_t k, const std::array<int, 3>& at) {
     double sum = boundary_conductance(k, at);
     for (std::size_t b = 0; b < 3; ++b)
@@ -156,30 +160,50 @@ DiffusionResult solve_diffusion(const VoxelGrid& grid, const std::vector<double>
           sum += conductance[b] * harmonic_mean(diffusivity[k], diffusivity[static_cast<std::size_t>(m)]);
       }
     diagonal[k] = sum;
-    x[k] = 1.0 - (at[a] + 0.5) / n[a];  // the linear profile
+    x[k] = 1.0 - (at[a] + 0.5) / n[a];                                   // the linear profile
     const double inflow = at[a] == 0 ? boundary * diffusivity[k] : 0.0;  // b: c = 1 on the inlet face
     r[k] = inflow;
-    return inflow * inflow;
+    return inflow * inflow / sum;
   });
-  // y = A v over the active voxels.
+  // y = A v over the active voxels. The neighbour lines along y and z come from the lattice once
+  // per line; along x the index steps by one (wrapping where periodic). A field of one positive
+  // diffusivity (the pore phase) skips the harmonic means: every active pair conducts fully.
+  bool uniform = true;
+  double first_open = 0.0;
+  for (const double d : diffusivity)
+    if (d > 0.0) {
+      if (first_open == 0.0) first_open = d;
+      uniform = uniform && d == first_open;
+    }
+  const bool wrap_x = grid.periodic[0] && a != 0 && n[0] >= 2;
   const auto apply = [&](const std::vector<double>& v, std::vector<double>& y) {
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (parallel)
     for (int i2 = 0; i2 < n[2]; ++i2)
-      for (int i1 = 0; i1 < n[1]; ++i1)
+      for (int i1 = 0; i1 < n[1]; ++i1) {
+        const std::array<int, 3> line{0, i1, i2};
+        const long base = static_cast<long>(grid.index(0, i1, i2));
+        const std::array<long, 4> across{lattice.neighbour(line, 1, -1), lattice.neighbour(line, 1, 1),
+                                         lattice.neighbour(line, 2, -1), lattice.neighbour(line, 2, 1)};
         for (int i0 = 0; i0 < n[0]; ++i0) {
-          const std::size_t k = grid.index(i0, i1, i2);
-          if (active[k] == 0) continue;
-          const std::array<int, 3> at{i0, i1, i2};
-          double sum = diagonal[k] * v[k];
-          for (std::size_t b = 0; b < 3; ++b)
-            for (const int step : {-1, 1}) {
-              const long m = lattice.neighbour(at, b, step);
-              if (m < 0) continue;
-              const auto mm = static_cast<std::size_t>(m);
-              if (active[mm] != 0) sum -= conductance[b] * harmonic_mean(diffusivity[k], diffusivity[mm]) * v[mm];
-            }
-          y[k] = sum;
+          const long k = base + i0;
+          const auto kk = static_cast<std::size_t>(k);
+          if (active[kk] == 0) continue;
+          double sum = diagonal[kk] * v[kk];
+          const auto couple = [&](long m, double c) {
+            if (m < 0) return;
+            const auto mm = static_cast<std::size_t>(m);
+            if (active[mm] == 0) return;
+            sum -= (uniform ? c * first_open : c * harmonic_mean(diffusivity[kk], diffusivity[mm])) * v[mm];
+          };
+          couple(i0 > 0 ? k - 1 : (wrap_x ? k + n[0] - 1 : -1), conductance[0]);
+          couple(i0 < n[0] - 1 ? k + 1 : (wrap_x ? k - n[0] + 1 : -1), conductance[0]);
+          couple(across[0] >= 0 ? across[0] + i0 : -1, conductance[1]);
+          couple(across[1] >= 0 ? across[1] + i0 : -1, conductance[1]);
+          couple(across[2] >= 0 ? across[2] + i0 : -1, conductance[2]);
+          couple(across[3] >= 0 ? across[3] + i0 : -1, conductance[2]);
+          y[kk] = sum;
         }
+      }
   };
   // r = b − A x (r holds b).
   apply(x, q);
@@ -189,22 +213,18 @@ DiffusionResult solve_diffusion(const VoxelGrid& grid, const std::vector<double>
     return r[k] * p[k];
   });
   const double tolerance2 = options.relative_tolerance * options.relative_tolerance * b_norm2;
-  double r_norm2 = reduce([&](std::size_t k, const std::array<int, 3>&) { return r[k] * r[k]; });
   int iteration = 0;
-  while (r_norm2 > tolerance2 && iteration < options.max_iterations) {
+  while (rz > tolerance2 && iteration < options.max_iterations) {
     apply(p, q);
     const double pq = reduce([&](std::size_t k, const std::array<int, 3>&) { return p[k] * q[k]; });
     if (!(pq > 0.0)) break;
     const double alpha = rz / pq;
-    double rz_next = 0.0;
-    r_norm2 = 0.0;
-    // x += α p, r −= α q; then r·z and |r|² in one sweep (two sums: slice_sums holds one at a time).
-    rz_next = reduce([&](std::size_t k, const std::array<int, 3>&) {
+    // x += α p, r −= α q, and r·z (z = D⁻¹ r) in one sweep.
+    const double rz_next = reduce([&](std::size_t k, const std::array<int, 3>&) {
       x[k] += alpha * p[k];
       r[k] -= alpha * q[k];
       return r[k] * r[k] / diagonal[k];
     });
-    r_norm2 = reduce([&](std::size_t k, const std::array<int, 3>&) { return r[k] * r[k]; });
     const double beta = rz_next / rz;
     rz = rz_next;
     reduce([&](std::size_t k, const std::array<int, 3>&) {
@@ -214,7 +234,7 @@ DiffusionResult solve_diffusion(const VoxelGrid& grid, const std::vector<double>
     ++iteration;
   }
   result.iterations = iteration;
-  result.converged = r_norm2 <= tolerance2;
+  result.converged = rz <= tolerance2;
 
   // Fluxes through the inlet and the outlet face (Δc = 1).
   const double flux_in = reduce([&](std::size_t k, const std::array<int, 3>& at) {

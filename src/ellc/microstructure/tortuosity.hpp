@@ -23,19 +23,19 @@
 namespace ellc::microstructure {
 
 struct DiffusionOptions {
-  double relative_tolerance = 1e-7;  // CG stops at |r| ≤ tol |b| (preconditioned norm)
+  double relative_tolerance = 1e-7;  // CG stops at |r| ≤ tol |b| in the norm of D⁻¹ (Jacobi)
   int max_iterations = 20000;
 };
 
 struct DiffusionResult {
   int axis = 2;
   bool percolating = false;
-  std::string reason;                      // why τ = ∞, when !percolating
-  double porosity = 0.0;                   // ε: pore fraction of the grid
-  double conducting_fraction = 0.0;        // fraction of the grid in the solve (percolating pore)
-  double effective_diffusivity = 0.0;      // D_eff / D_bulk
-  double tortuosity = 0.0;                 // τ = ε D_bulk / D_eff (infinity when !percolating)
-  double flux_mismatch = 0.0;              // |J_in − J_out| / J_in: the solve's conservation check
+  std::string reason;                  // why τ = ∞, when !percolating
+  double porosity = 0.0;               // ε: pore fraction of the grid
+  double conducting_fraction = 0.0;    // fraction of the grid in the solve (percolating pore)
+  double effective_diffusivity = 0.0;  // D_eff / D_bulk
+  double tortuosity = 0.0;             // τ = ε D_bulk / D_eff (infinity when !percolating)
+  double flux_mismatch = 0.0;          // |J_in − J_out| / J_in: the solve's conservation check
   int iterations = 0;
   bool converged = false;
   double seconds = 0.0;
@@ -44,8 +44,8 @@ struct DiffusionResult {
 // General field: diffusivity[k] ≥ 0 per voxel (0: solid), bulk = the reference for τ (the pore
 // diffusivity). The grid supplies shape, spacing and periodicity; its `solid` is not used.
 // ε is the fraction of voxels with diffusivity > 0.
-[[nodiscard]] DiffusionResult solve_diffusion(const VoxelGrid& grid, const std::vector<double>& diffusivity,
-                                              int axis, double bulk = 1.0, const DiffusionOptions& options = {});
+[[nodiscard]] DiffusionResult solve_diffusion(const VoxelGrid& grid, const std::vector<double>& diffusivity, int axis,
+                                              double bulk = 1.0, const DiffusionOptions& options = {});
 // The pore phase of the grid (solid == 0) with D = 1.
 [[nodiscard]] DiffusionResult tortuosity_factor(const VoxelGrid& grid, int axis, const DiffusionOptions& options = {});
 

@@ -102,8 +102,7 @@ void fill_solid(const Packing& packing, VoxelGrid& grid) {
         const double discriminant = b * b - m(2, 2) * (q - 1.0);
         if (discriminant < 0.0) continue;
         const double root = std::sqrt(discriminant);
-        const auto [z0, z1] =
-            centre_range(c.z() + (-b - root) / m(2, 2), c.z() + (-b + root) / m(2, 2), o.z(), h.z());
+        const auto [z0, z1] = centre_range(c.z() + (-b - root) / m(2, 2), c.z() + (-b + root) / m(2, 2), o.z(), h.z());
         const std::size_t gy = static_cast<std::size_t>(wrap(iy, ny));
         for (long iz = z0; iz <= z1; ++iz) {
           if (!grid.periodic[2] && (iz < 0 || iz >= nz)) continue;

@@ -26,8 +26,7 @@ struct VoxelGrid {
   std::vector<std::uint8_t> solid;  // 1 solid, 0 pore; x fastest: index = ix + nx (iy + ny iz)
 
   [[nodiscard]] std::size_t size() const noexcept {
-    return static_cast<std::size_t>(shape[0]) * static_cast<std::size_t>(shape[1]) *
-           static_cast<std::size_t>(shape[2]);
+    return static_cast<std::size_t>(shape[0]) * static_cast<std::size_t>(shape[1]) * static_cast<std::size_t>(shape[2]);
   }
   [[nodiscard]] std::size_t index(int ix, int iy, int iz) const noexcept {
     return static_cast<std::size_t>(ix) +
