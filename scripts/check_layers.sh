@@ -12,8 +12,9 @@ rules=(
   "contact:geometry,law,hertz,material"
   "engine:contact,geometry,law,hertz,material"
   "cases:io,geometry,law,hertz,material"
-  "scenario:engine,cases,io,contact,geometry,law,hertz,material"
+  "scenario:engine,cases,io,contact,geometry,law,hertz,material,microstructure"
   "calibration:cases,geometry,law,io,hertz,material"
+  "microstructure:io,geometry,hertz,material"
 )
 bad=0
 for rule in "${rules[@]}"; do

@@ -28,12 +28,14 @@
 #include <omp.h>
 #endif
 
+#include "analyse_command.hpp"
 #include "command_registry.hpp"
 #include "ellc/io/input_error.hpp"
 #include "ellc/scenario/ensemble.hpp"
 #include "ellc/scenario/run_plan.hpp"
 #include "ellc/scenario/scenario_runner.hpp"
 #include "plot_runner.hpp"
+#include "thread_policy.hpp"
 
 namespace ellc::cli {
 namespace {
@@ -143,32 +145,6 @@ void check_finite_summary(const scenario::RunSummary& s, const std::string& sour
                                "likely cause (please report the scenario: the bounds should have caught it)");
 }
 
-// OpenMP threads that spin at barriers (libgomp's default) lose their time slices to each other
-// when the machine is busier than its cores, and a 2-thread run then takes ~10x longer than a
-// 1-thread one. libgomp reads its wait policy once, before main(), so `ellc dem` re-executes
-// itself once with GOMP_SPINCOUNT=1000 unless the user set a policy (docs/engine.md, "Threads").
-void prefer_short_spinning() {
-#if defined(__linux__) && defined(_OPENMP)
-  if (std::getenv("OMP_WAIT_POLICY") != nullptr || std::getenv("GOMP_SPINCOUNT") != nullptr) return;
-  std::ifstream cmdline("/proc/self/cmdline", std::ios::binary);
-  std::string text((std::istreambuf_iterator<char>(cmdline)), std::istreambuf_iterator<char>());
-  std::vector<std::string> words;
-  for (std::size_t start = 0; start < text.size();) {
-    const std::size_t end = text.find('\0', start);
-    words.push_back(text.substr(start, end == std::string::npos ? std::string::npos : end - start));
-    if (end == std::string::npos) break;
-    start = end + 1;
-  }
-  if (words.empty()) return;
-  std::vector<char*> arguments;
-  for (auto& word : words) arguments.push_back(word.data());
-  arguments.push_back(nullptr);
-  setenv("GOMP_SPINCOUNT", "1000", 1);
-  std::fflush(nullptr);
-  execv("/proc/self/exe", arguments.data());  // returns only on failure: then run as we are
-#endif
-}
-
 scenario::RunSummary run_single(const DemOptions& options, scenario::Scenario loaded) {
   scenario::RunOptions run_options;
   run_options.output_directory = options.output_directory;
@@ -203,6 +179,7 @@ scenario::RunSummary run_single(const DemOptions& options, scenario::Scenario lo
     run_python_plot({"dem", (directory / "timeseries.csv").string(), png, "--title", options.scenario_path});
     std::printf("  plot: %s\n", png.c_str());
   }
+  if (runner.scenario().analysis && runner.done()) analyse_run_states(runner, options.no_plot);  // [analysis]
   return summary;
 }
 

@@ -20,5 +20,6 @@ void bind_geometry(py::module_& module);
 void bind_law(py::module_& module);
 void bind_cases(py::module_& module);
 void bind_calibration(py::module_& module);
+void bind_microstructure(py::module_& module);
 
 }  // namespace ellc::python

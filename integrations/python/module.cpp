@@ -40,6 +40,7 @@ PYBIND11_MODULE(_ellc, module) {
   ellc::python::bind_cases(module);
   ellc::python::bind_geometry(module);
   ellc::python::bind_dem(module);
+  ellc::python::bind_microstructure(module);  // the submodule ellc._ellc.microstructure
 #ifdef ELLC_PYTHON_CALIBRATION
   ellc::python::bind_calibration(module);
 #endif

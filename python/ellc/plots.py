@@ -12,7 +12,8 @@ The command line reads the CSV tables the tools write and calls these functions;
 ``python3 -m ellc.plots curve IN.csv OUT.png`` (subcommands ``curve``, ``fit PREFIX``,
 ``pressure CASE.toml OUT.png``, which needs the compiled module, ``dem IN.csv OUT.png``, and
 ``dem-ensemble OUT.png CSV...`` for the members of ``ellc dem --seeds N``, drawn by
-:func:`plot_pressure_thickness_ensemble`).
+:func:`plot_pressure_thickness_ensemble`, ``analysis DIR`` for the PNGs of ``ellc analyse`` and
+``tortuosity-porosity OUT.png DIR...``, both drawn by :mod:`ellc.microstructure`).
 The single panels live in ellc.figures.
 """
 
@@ -286,6 +287,26 @@ def dem_ensemble_command(args):
     return 0
 
 
+def analysis_command(args):
+    """profile.png, pore_size_distribution.png, normal_force_pdf.png of an `ellc analyse` folder."""
+    from ellc import microstructure
+
+    microstructure.draw_analysis(args.directory, title=args.title)
+    return 0
+
+
+def tortuosity_porosity_command(args):
+    """tau_z against porosity for analysed states (folders of `ellc analyse`), with Bruggeman."""
+    import pathlib
+
+    from ellc import microstructure
+
+    states = [(pathlib.Path(folder).name.replace("analysis_", ""), microstructure.read_summary(folder))
+              for folder in args.directories]
+    _save(microstructure.tortuosity_porosity_figure(states, title=args.title), args.png)
+    return 0
+
+
 def main(argv=None):
     parser = argparse.ArgumentParser(prog="python3 -m ellc.plots")
     sub = parser.add_subparsers(dest="command", required=True)
@@ -313,6 +334,15 @@ def main(argv=None):
     ensemble.add_argument("--labels", help="comma-separated member names (default: each CSV's folder)")
     ensemble.add_argument("--title")
     ensemble.set_defaults(run=dem_ensemble_command)
+    analysis = sub.add_parser("analysis", help="profiles, pore sizes and force PDF of an `ellc analyse` folder")
+    analysis.add_argument("directory")
+    analysis.add_argument("--title")
+    analysis.set_defaults(run=analysis_command)
+    tortuosity = sub.add_parser("tortuosity-porosity", help="tau_z against porosity of `ellc analyse` folders")
+    tortuosity.add_argument("png")
+    tortuosity.add_argument("directories", nargs="+")
+    tortuosity.add_argument("--title")
+    tortuosity.set_defaults(run=tortuosity_porosity_command)
     args = parser.parse_args(argv)
     if argv is None:  # run as a program (the CLI): no display, write files only
         plt.switch_backend("Agg")

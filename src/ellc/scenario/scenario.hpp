@@ -80,6 +80,16 @@ struct OutputSpec {
   long checkpoint_every = 0;  // steps, 0 = only at the end (and on failure)
 };
 
+// [analysis] (opt-in): `ellc dem` analyses the microstructure of the loaded and the released state
+// (docs/microstructure.md, "In the calendering workflow").
+struct AnalysisSpec {
+  double voxels_per_semi_axis = 5.0;  // the resolution against the smallest semi-axis, unless
+  double spacing = 0.0;               // a voxel size is given (µm)
+  double memory_limit_gib = 4.0;      // grids above it are refused with the estimate
+  double coarse_factor = 2.0;         // τ again at this × the voxel size (the resolution check); 1: not
+  std::string axes = "xyz";           // the tortuosity directions
+};
+
 struct Scenario {
   std::string source;  // file name, for messages
   std::string text;    // the file's text (its hash goes into checkpoints)
@@ -96,6 +106,7 @@ struct Scenario {
   SettleSpec settle;
   CalenderingSpec calendering;
   OutputSpec output;
+  std::optional<AnalysisSpec> analysis;  // [analysis]; empty: no microstructure analysis
   std::vector<std::string> warnings;
 };
 

@@ -260,6 +260,23 @@ void read_output(TableReader& table, OutputSpec& output) {
   table.finish();
 }
 
+AnalysisSpec read_analysis(TableReader& table) {
+  AnalysisSpec spec;
+  spec.voxels_per_semi_axis = positive_or(table, "voxels_per_semi_axis", spec.voxels_per_semi_axis);
+  spec.spacing = positive_or(table, "spacing", 0.0);
+  spec.memory_limit_gib = positive_or(table, "memory_limit_gib", spec.memory_limit_gib);
+  spec.coarse_factor = table.number_or("coarse_factor", spec.coarse_factor);
+  if (!(spec.coarse_factor >= 1.0))
+    table.fail("coarse_factor", spec.coarse_factor, "a factor >= 1 (1: no second resolution)");
+  if (const auto axes = table.optional_string("axes")) {
+    if (axes->empty() || axes->find_first_not_of("xyz") != std::string::npos)
+      table.fail("axes", "\"" + *axes + "\"", "the tortuosity directions, some of x, y, z (e.g. \"z\" or \"xyz\")");
+    spec.axes = *axes;
+  }
+  table.finish();
+  return spec;
+}
+
 // Checks that need several tables at once.
 void cross_check(const Scenario& scenario) {
   const PackingSpec& spec = scenario.packing;
@@ -335,6 +352,7 @@ Scenario read(const toml::table& root_table, const std::string& source, std::str
     read_calendering(calendering, scenario.calendering);
   }
   if (auto output = root.optional_table("output")) read_output(*output, scenario.output);
+  if (auto analysis = root.optional_table("analysis")) scenario.analysis = read_analysis(*analysis);
   root.finish();
   scenario.packing.density = scenario.material_density * scenario.mass_scaling;
   cross_check(scenario);

@@ -6,6 +6,7 @@
 #include "ellc/io/input_error.hpp"
 #include "ellc/scenario/checkpoint.hpp"
 #include "ellc/scenario/packing.hpp"
+#include "ellc/scenario/state_analysis.hpp"
 
 namespace ellc::scenario {
 
@@ -93,8 +94,10 @@ void ScenarioRunner::build_packing(EngineSettings settings) {
 // The end of the hold is the loaded state the summary reports.
 void ScenarioRunner::enter(Phase phase) {
   outputs_.record_sample(*simulation_, protocol_.state().phase, ledger_);
-  if (protocol_.state().phase == Phase::hold && phase != Phase::hold)
+  if (protocol_.state().phase == Phase::hold && phase != Phase::hold) {
     loaded_ = scenario::loaded_state(*simulation_, scales_, ledger_);
+    if (scenario_.analysis) loaded_packing_ = packing_of(*simulation_);
+  }
   protocol_.enter(*simulation_, phase);
 }
 

@@ -7,10 +7,12 @@
 #include <cstdint>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "ellc/engine/simulation.hpp"
+#include "ellc/microstructure/packing.hpp"
 #include "ellc/scenario/diagnostics.hpp"
 #include "ellc/scenario/protocol_stages.hpp"
 #include "ellc/scenario/run_outputs.hpp"
@@ -50,6 +52,11 @@ class ScenarioRunner {
   // The diagnostics of the current state (diagnostics.hpp), and the state when the hold ended.
   [[nodiscard]] Diagnostics diagnostics() const noexcept;
   [[nodiscard]] const LoadedState& loaded_state() const noexcept { return loaded_; }
+  // With [analysis]: the packing at the end of the hold (state_analysis.hpp), for its
+  // microstructure analysis; empty before the hold ended in this process (also after a restart).
+  [[nodiscard]] const std::optional<microstructure::Packing>& loaded_packing() const noexcept {
+    return loaded_packing_;
+  }
   [[nodiscard]] RunSummary summary() const;
   [[nodiscard]] double progress() const noexcept;  // rough fraction done, for the progress bar
   [[nodiscard]] const std::string& output_directory() const noexcept { return outputs_.directory(); }
@@ -72,6 +79,7 @@ class ScenarioRunner {
   RunOutputs outputs_;
   EnergyLedger ledger_;
   LoadedState loaded_;
+  std::optional<microstructure::Packing> loaded_packing_;
   std::unique_ptr<engine::Simulation> simulation_;
   double dt_estimate_ = 0.0;
   std::vector<std::string> warnings_;

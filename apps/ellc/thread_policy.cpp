@@ -1,0 +1,36 @@
+#include "thread_policy.hpp"
+
+#include <unistd.h>
+
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <iterator>
+#include <string>
+#include <vector>
+
+namespace ellc::cli {
+
+void prefer_short_spinning() {
+#if defined(__linux__) && defined(_OPENMP)
+  if (std::getenv("OMP_WAIT_POLICY") != nullptr || std::getenv("GOMP_SPINCOUNT") != nullptr) return;
+  std::ifstream cmdline("/proc/self/cmdline", std::ios::binary);
+  std::string text((std::istreambuf_iterator<char>(cmdline)), std::istreambuf_iterator<char>());
+  std::vector<std::string> words;
+  for (std::size_t start = 0; start < text.size();) {
+    const std::size_t end = text.find('\0', start);
+    words.push_back(text.substr(start, end == std::string::npos ? std::string::npos : end - start));
+    if (end == std::string::npos) break;
+    start = end + 1;
+  }
+  if (words.empty()) return;
+  std::vector<char*> arguments;
+  for (auto& word : words) arguments.push_back(word.data());
+  arguments.push_back(nullptr);
+  setenv("GOMP_SPINCOUNT", "1000", 1);
+  std::fflush(nullptr);
+  execv("/proc/self/exe", arguments.data());  // returns only on failure: then run as we are
+#endif
+}
+
+}  // namespace ellc::cli

@@ -1,0 +1,1 @@
+ellc_add_benchmark(bench_microstructure ${CMAKE_CURRENT_LIST_DIR}/bench_microstructure.cpp)

@@ -1,0 +1,124 @@
+#include "ellc/microstructure/analysis.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <ostream>
+
+#include "ellc/io/input_error.hpp"
+#include "ellc/microstructure/export.hpp"
+
+namespace ellc::microstructure {
+
+namespace {
+
+constexpr std::array<char, 3> kAxes{'x', 'y', 'z'};
+
+double mean_radius(const Packing& packing) {
+  double sum = 0.0;
+  for (const auto& axes : packing.semi_axes) sum += std::cbrt(axes.prod());
+  return packing.size() > 0 ? sum / static_cast<double>(packing.size()) : 0.0;
+}
+
+std::string number_or_inf(double value) { return std::isfinite(value) ? format_number(value) : "inf"; }
+
+}  // namespace
+
+AnalysisReport analyse(const Packing& packing, const AnalysisOptions& options, const std::string& source) {
+  validate_packing(packing, source);
+  AnalysisReport report;
+  report.particles = packing.size();
+  report.contacts = packing.contacts.size();
+  report.spacing = requested_spacing(packing, options.resolution, source);
+  report.grid = empty_grid(packing.box, report.spacing, options.resolution, source);
+  const auto start = std::chrono::steady_clock::now();
+  fill_solid(packing, report.grid);
+  report.voxelise_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  report.porosity_analytic = 1.0 - packing.particle_volume() / packing.box.volume();
+  report.porosity_voxels = report.grid.porosity();
+
+  const double slab = options.slab_thickness > 0.0 ? options.slab_thickness : 0.5 * mean_radius(packing);
+  const double height = packing.box.upper.z() - packing.box.lower.z();
+  const int slabs = slab > 0.0 ? std::max(1, static_cast<int>(std::lround(height / slab))) : 1;
+  report.profile = height_profile(packing, slabs, &report.grid);
+  report.pore_sizes = continuous_pore_size_distribution(report.grid, options.pore_size_radii);
+  report.forces = normal_force_distribution(packing.contacts);
+
+  for (std::size_t axis = 0; axis < 3; ++axis)
+    if (options.tortuosity_axes[axis])
+      report.tortuosity[axis] = tortuosity_factor(report.grid, static_cast<int>(axis), options.diffusion);
+  if (options.coarse_factor > 1.0) {
+    const VoxelGrid coarse = voxelise_coarser(packing, report.spacing, options.coarse_factor);
+    report.coarse_spacing = report.spacing * options.coarse_factor;
+    report.coarse_shape = coarse.shape;
+    for (std::size_t axis = 0; axis < 3; ++axis)
+      if (options.tortuosity_axes[axis])
+        report.tortuosity_coarse[axis] = tortuosity_factor(coarse, static_cast<int>(axis), options.diffusion);
+  }
+  return report;
+}
+
+void write_analysis_summary(std::ostream& out, const AnalysisReport& report) {
+  const VoxelGrid& grid = report.grid;
+  out << "particles = " << report.particles << "\ncontacts = " << report.contacts
+      << "\nvoxel_size_um = " << format_number(report.spacing) << "\ngrid = " << grid.shape[0] << " x " << grid.shape[1]
+      << " x " << grid.shape[2] << "\ngrid_spacing_um = " << format_number(grid.spacing.x()) << ' '
+      << format_number(grid.spacing.y()) << ' ' << format_number(grid.spacing.z())
+      << "\nvoxelise_seconds = " << format_number(report.voxelise_seconds)
+      << "\nporosity_analytic = " << format_number(report.porosity_analytic)
+      << "\nporosity_voxels = " << format_number(report.porosity_voxels)
+      << "\npore_radius_median_um = " << format_number(report.pore_sizes.median_radius)
+      << "\npore_radius_largest_um = " << format_number(report.pore_sizes.largest_radius)
+      << "\nmean_normal_force_uN = " << format_number(report.forces.mean_force) << '\n';
+  const auto write = [&](const std::optional<DiffusionResult>& result, const std::string& suffix) {
+    if (!result) return;
+    const char axis = kAxes[static_cast<std::size_t>(result->axis)];
+    out << "tortuosity_" << axis << suffix << " = " << number_or_inf(result->tortuosity) << '\n';
+    if (!result->reason.empty()) out << "tortuosity_" << axis << suffix << "_note = " << result->reason << '\n';
+  };
+  for (const auto& result : report.tortuosity) write(result, "");
+  if (report.coarse_spacing > 0.0) {
+    out << "coarse_voxel_size_um = " << format_number(report.coarse_spacing)
+        << "\ncoarse_grid = " << report.coarse_shape[0] << " x " << report.coarse_shape[1] << " x "
+        << report.coarse_shape[2] << '\n';
+    for (const auto& result : report.tortuosity_coarse) write(result, "_coarse");
+  }
+}
+
+void write_analysis(const std::string& directory, const Packing& packing, const AnalysisReport& report) {
+  std::error_code error;
+  std::filesystem::create_directories(directory, error);
+  if (error) throw InputError(directory, "output directory", directory, "a folder that can be created");
+  const auto in = [&](const char* name) { return (std::filesystem::path(directory) / name).string(); };
+  write_vti(in("solid.vti"), report.grid);
+  write_npy(in("solid.npy"), report.grid);
+  write_profile_csv(in("profile.csv"), report.profile);
+  write_pore_size_csv(in("pore_size_distribution.csv"), report.pore_sizes);
+  write_force_distribution_csv(in("normal_force_pdf.csv"), report.forces);
+  write_force_network_vtp(in("force_network.vtp"), packing);
+  write_packing_file(in("packing.csv"), packing);
+  {
+    std::ofstream out(in("tortuosity.csv"));
+    out.precision(10);
+    out << "# tau = porosity * D_bulk / D_eff (docs/microstructure.md); inf: no percolating pore path\n"
+        << "axis,voxel_size_um,nx,ny,nz,porosity,conducting_fraction,effective_diffusivity,tortuosity,iterations,"
+           "converged,flux_mismatch,seconds,note\n";
+    const auto row = [&](const std::optional<DiffusionResult>& r, double size, const std::array<int, 3>& shape) {
+      if (!r) return;
+      out << kAxes[static_cast<std::size_t>(r->axis)] << ',' << size << ',' << shape[0] << ',' << shape[1] << ','
+          << shape[2] << ',' << r->porosity << ',' << r->conducting_fraction << ',' << r->effective_diffusivity << ','
+          << number_or_inf(r->tortuosity) << ',' << r->iterations << ',' << (r->converged ? 1 : 0) << ','
+          << r->flux_mismatch << ',' << r->seconds << ",\"" << r->reason << "\"\n";
+    };
+    for (const auto& r : report.tortuosity) row(r, report.spacing, report.grid.shape);
+    for (const auto& r : report.tortuosity_coarse) row(r, report.coarse_spacing, report.coarse_shape);
+  }
+  std::ofstream summary(in("analysis.txt"));
+  summary << "# ellc microstructure analysis (docs/microstructure.md)\n";
+  write_analysis_summary(summary, report);
+  if (!summary) throw InputError(in("analysis.txt"), "output file", in("analysis.txt"), "a writable path");
+}
+
+}  // namespace ellc::microstructure

@@ -1,0 +1,57 @@
+#pragma once
+// The tortuosity factor of the pore phase from a steady diffusion solve on the voxel grid.
+//
+// Definition (docs/microstructure.md, "Tortuosity"): τ = ε D_bulk / D_eff, with ε the pore
+// fraction of the grid, D_bulk the diffusivity in the pore (1 here) and D_eff the effective
+// diffusivity of the whole grid along the axis: D_eff = J L / (A Δc), with J the steady flux
+// through the grid when c = 1 on the inlet face and c = 0 on the outlet face (the two flux
+// boundaries), and the other faces periodic where the box is, no-flux where it is not. Straight
+// channels give τ = 1; Bruggeman's relation is τ = ε^(−1/2) (τ = ε^(1−α) with D_eff = ε^α).
+//
+// Discretisation: cell-centred finite volumes, one unknown per pore voxel connected to both
+// faces; the conductance between neighbouring voxels is the harmonic mean of their diffusivities
+// times face area over centre distance (exact for layers in series), and a face voxel is joined to
+// its boundary by half a voxel. The symmetric positive definite system is solved matrix-free by
+// conjugate gradients with a Jacobi preconditioner, starting from the linear profile. Sums are
+// taken over fixed blocks in a fixed order, so the result does not depend on the thread count.
+
+#include <string>
+#include <vector>
+
+#include "ellc/microstructure/voxel_grid.hpp"
+
+namespace ellc::microstructure {
+
+struct DiffusionOptions {
+  double relative_tolerance = 1e-7;  // CG stops at |r| ≤ tol |b| in the norm of D⁻¹ (Jacobi)
+  int max_iterations = 20000;
+};
+
+struct DiffusionResult {
+  int axis = 2;
+  bool percolating = false;
+  std::string reason;                  // why τ = ∞, when !percolating
+  double porosity = 0.0;               // ε: pore fraction of the grid
+  double conducting_fraction = 0.0;    // fraction of the grid in the solve (percolating pore)
+  double effective_diffusivity = 0.0;  // D_eff / D_bulk
+  double tortuosity = 0.0;             // τ = ε D_bulk / D_eff (infinity when !percolating)
+  double flux_mismatch = 0.0;          // |J_in − J_out| / J_in: the solve's conservation check
+  int iterations = 0;
+  bool converged = false;
+  double seconds = 0.0;
+};
+
+// General field: diffusivity[k] ≥ 0 per voxel (0: solid), bulk = the reference for τ (the pore
+// diffusivity). The grid supplies shape, spacing and periodicity; its `solid` is not used.
+// ε is the fraction of voxels with diffusivity > 0.
+[[nodiscard]] DiffusionResult solve_diffusion(const VoxelGrid& grid, const std::vector<double>& diffusivity, int axis,
+                                              double bulk = 1.0, const DiffusionOptions& options = {});
+// The pore phase of the grid (solid == 0) with D = 1.
+[[nodiscard]] DiffusionResult tortuosity_factor(const VoxelGrid& grid, int axis, const DiffusionOptions& options = {});
+
+// The Bruggeman exponent α of D_eff/D_bulk = ε^α, i.e. τ = ε^(1 − α) (α = 1.5 is Bruggeman's
+// τ = ε^(−1/2)): the least-squares fit of ln τ = (1 − α) ln ε through the origin over the states
+// with a finite τ and 0 < ε < 1. NaN when there is no such state (callers print "n/a" and why).
+[[nodiscard]] double fit_bruggeman_exponent(const std::vector<double>& porosity, const std::vector<double>& tortuosity);
+
+}  // namespace ellc::microstructure
