@@ -38,6 +38,7 @@ struct FitOptions {
   double elastic_tolerance = 0.02;
   std::string log_path;  // default: OUTPUT.log, or ellc_fit.log without -o
   bool accept_poor_fit = false;
+  std::string form = "paper";  // paper: one material; stiffness_ratio: several, λ_max, ε_max × (E_e/Y)^q
 };
 
 // The RMS relative force error of the calibrated law against a case's loading data above which
@@ -88,6 +89,7 @@ void run_fit(const FitOptions& options) {
   }
   calibration.hertz = options.hertz == "exact" ? HertzMode::exact : HertzMode::hale;
   calibration.elastic_tolerance = options.elastic_tolerance;
+  calibration.form = options.form == "stiffness_ratio" ? TransitionForm::stiffness_ratio : TransitionForm::paper;
 
   std::vector<CalibrationCase> cases;
   for (const auto& argument : options.data) cases.push_back(read_calibration_case(argument));
@@ -145,6 +147,9 @@ void run_fit(const FitOptions& options) {
   std::fprintf(summary, "  m, o, p = %.4g, %.4g, %.4g   s, t, u = %.4g, %.4g, %.4g   n = %.4g  (eq. 52, 28)\n",
                fit.lambda_amplitude, fit.lambda_rate, fit.lambda_offset, fit.epsilon_amplitude, fit.epsilon_rate,
                fit.epsilon_offset, fit.transition_exponent);
+  if (result.stiffness_fitted)
+    std::fprintf(summary, "  x (E_e/Y / %.4g)^q: q_lambda = %.4g, q_epsilon = %.4g  (form stiffness_ratio)\n",
+                 fit.reference_stiffness_ratio, fit.lambda_stiffness_exponent, fit.epsilon_stiffness_exponent);
   for (const auto& warning : result.warnings) std::fprintf(stderr, "ellc: warning: %s\n", warning.c_str());
 
   if (!options.plot_prefix.empty()) {
@@ -183,6 +188,11 @@ const RegisterCommand registration([](CLI::App& root) {
                       "empty");
   command->add_flag("--accept-poor-fit", options->accept_poor_fit,
                     "Write the model even when it misses some case's data by more than 10 % RMS");
+  command
+      ->add_option("--form", options->form,
+                   "paper: eq. (52), one material; stiffness_ratio: several materials, lambda_max and epsilon_max "
+                   "also scale with (E_e/Y)^q (docs/calibration.md)")
+      ->check(CLI::IsMember({"paper", "stiffness_ratio"}));
   command->callback([options] { run_fit(*options); });
 });
 

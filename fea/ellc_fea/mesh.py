@@ -21,6 +21,7 @@ MESH_LEVELS = {
     # Ductile materials: the contact radius at first yield is ~0.1 um for r = 10 um, so the
     # contact size is cut 5x below "medium"; the element count grows only ~ log(1/h0).
     "ductile": (0.003, 0.22, 0.18),
+    "ductile_coarse": (0.006, 0.22, 0.18),  # plastic mesh check of "ductile", one level down
     "ductile_fine": (0.0015, 0.15, 0.12),
 }
 

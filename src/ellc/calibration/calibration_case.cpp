@@ -163,6 +163,7 @@ CalibrationCase read_calibration_case(const std::string& csv_path, const std::st
   CalibrationCase result;
   CsvContent content = read_overlap_force_csv(csv_path);
   result.name = case_name_of(csv_path);
+  result.case_path = case_path;
   std::vector<std::string> warnings;  // aspect-ratio warnings do not matter for a calibration
   read_case_geometry(case_path, result.body_i, result.body_j, warnings);
   check_case_data(content, csv_path, case_path, result.body_i, result.body_j);

@@ -25,6 +25,7 @@ struct CalibrationCase {
   BodySpec body_j;
   std::vector<double> overlaps;  // δ, µm
   std::vector<double> forces;    // F, µN
+  std::string case_path{};       // the case file with the geometry and material (messages name it)
 };
 
 // The constants of a case are case_contact_constants(body_i, body_j, ...) of io/case_file.hpp,

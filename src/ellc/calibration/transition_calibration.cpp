@@ -75,6 +75,24 @@ struct ExponentialResiduals {
   }
 };
 
+// The stiffness_ratio form: (a exp(r x) + b) exp(q ln(η/η_ref)) − y, one block per constant so
+// that any of them can be held.
+struct StiffnessFormResiduals {
+  std::span<const double> x;
+  std::vector<double> log_stiffness;  // ln(η/η_ref)
+  std::span<const double> y;
+
+  template <typename T>
+  bool operator()(const T* const amplitude, const T* const rate, const T* const offset, const T* const exponent,
+                  T* residuals) const {
+    using std::exp;
+    for (std::size_t index = 0; index < x.size(); ++index)
+      residuals[index] =
+          (amplitude[0] * exp(rate[0] * x[index]) + offset[0]) * exp(exponent[0] * log_stiffness[index]) - y[index];
+    return true;
+  }
+};
+
 ceres::Solver::Options solver_options() {
   ceres::Solver::Options options;
   options.minimizer_type = ceres::TRUST_REGION;
@@ -224,6 +242,48 @@ std::string format_percent(double fraction) {
   return out.str();
 }
 
+// With the paper's form one material is fitted: every case's bodies must have the first case's
+// materials. Throws naming the case file and the field that differs.
+void require_one_material(const std::vector<CalibrationCase>& cases) {
+  const CalibrationCase& first = cases.front();
+  for (const CalibrationCase& data : cases) {
+    const struct {
+      const char* body;
+      const Material& material;
+      const Material& expected;
+    } bodies[] = {{"body_I", data.body_i.material, first.body_i.material},
+                  {"body_J", data.body_j.material, first.body_j.material}};
+    for (const auto& [body, material, expected] : bodies) {
+      const struct {
+        const char* field;
+        double value;
+        double expected;
+      } fields[] = {{"youngs_modulus", material.youngs_modulus, expected.youngs_modulus},
+                    {"poisson_ratio", material.poisson_ratio, expected.poisson_ratio},
+                    {"yield_stress", material.yield_stress, expected.yield_stress}};
+      for (const auto& [field, value, wanted] : fields) {
+        if (value == wanted) continue;
+        const std::string source = data.case_path.empty() ? data.name : data.case_path + " (data " + data.name + ")";
+        throw InputError(source, std::string(body) + ".material." + field + " = " + format_number(value) +
+                                     " differs from " + format_number(wanted) + " of the first case (" +
+                                     (first.case_path.empty() ? first.name : first.case_path) +
+                                     "): expected one material per fit of the paper's form; fit several materials "
+                                     "with --form stiffness_ratio");
+      }
+    }
+  }
+}
+
+void require_converged(const ExponentialFit& fit, const char* quantity, std::size_t case_count, int max_iterations) {
+  if (fit.converged) return;
+  std::ostringstream out;
+  out.precision(4);
+  out << "the fit of " << quantity << " across the " << case_count << " cases (eq. 52) did not converge within "
+      << max_iterations << " iterations (Ceres: " << fit.solver_report << "); RMS residual " << fit.rms
+      << ": no [model] written";
+  throw InputError("ellc fit", out.str());
+}
+
 }  // namespace
 
 double profile_lambda(const TransitionPoint& point, double contact_radius_ratio,
@@ -252,8 +312,24 @@ std::vector<LambdaSample> lambda_profile(const ContactConstants& c, std::span<co
   return samples;
 }
 
+namespace {
+
+// RMS of y − (amplitude exp(rate x) + offset) (η/η_ref)^q; log_stiffness empty: q ignored.
+double form_rms(const ExponentialFit& fit, std::span<const double> x, std::span<const double> y,
+                std::span<const double> log_stiffness = {}) {
+  double sum = 0.0;
+  for (std::size_t index = 0; index < x.size(); ++index) {
+    const double factor = log_stiffness.empty() ? 1.0 : std::exp(fit.stiffness_exponent * log_stiffness[index]);
+    const double residual = (fit.amplitude * std::exp(fit.rate * x[index]) + fit.offset) * factor - y[index];
+    sum += residual * residual;
+  }
+  return x.empty() ? 0.0 : std::sqrt(sum / static_cast<double>(x.size()));
+}
+
+}  // namespace
+
 ExponentialFit fit_exponential(std::span<const double> x, std::span<const double> y, double fixed_amplitude,
-                               double fixed_rate) {
+                               double fixed_rate, int max_iterations) {
   ExponentialFit fit;
   const std::size_t distinct = distinct_count(x);
   if (distinct == 0) return fit;
@@ -264,17 +340,21 @@ ExponentialFit fit_exponential(std::span<const double> x, std::span<const double
     for (std::size_t index = 0; index < x.size(); ++index)
       sum += y[index] - fixed_amplitude * std::exp(fixed_rate * x[index]);
     fit.offset = sum / static_cast<double>(x.size());
+    fit.rms = form_rms(fit, x, y);
     return fit;
   }
   if (distinct < kDistinctForRate) {
     fit.rate = fixed_rate;
     std::tie(fit.amplitude, fit.offset) = linear_amplitude_offset(x, y, fixed_rate);
     fit.amplitude_fitted = true;
+    fit.rms = form_rms(fit, x, y);
     return fit;
   }
   fit.amplitude_fitted = fit.rate_fitted = true;
+  fit.converged = false;
   double best_cost = std::numeric_limits<double>::infinity();
-  const ceres::Solver::Options options = solver_options();
+  ceres::Solver::Options options = solver_options();
+  options.max_num_iterations = max_iterations;
   for (const double rate_start : {fixed_rate, -20.0, -12.0, -8.0, -5.0, -3.0, -1.5, -0.5, 0.5, 2.0}) {
     double parameters[3];
     std::tie(parameters[0], parameters[2]) = linear_amplitude_offset(x, y, rate_start);
@@ -287,6 +367,9 @@ ExponentialFit fit_exponential(std::span<const double> x, std::span<const double
     problem.SetParameterUpperBound(parameters, 1, kRateBound);
     ceres::Solver::Summary summary;
     ceres::Solve(options, &problem, &summary);
+    const bool converged = summary.termination_type == ceres::CONVERGENCE && std::isfinite(summary.final_cost);
+    if (!converged && fit.solver_report.empty()) fit.solver_report = summary.message;
+    fit.converged = fit.converged || converged;
     if (std::isfinite(summary.final_cost) && summary.final_cost < best_cost * (1.0 - 1e-9)) {
       best_cost = summary.final_cost;
       fit.amplitude = parameters[0];
@@ -294,11 +377,77 @@ ExponentialFit fit_exponential(std::span<const double> x, std::span<const double
       fit.offset = parameters[2];
     }
   }
+  fit.rms = form_rms(fit, x, y);
+  return fit;
+}
+
+ExponentialFit fit_stiffness_form(std::span<const double> x, std::span<const double> stiffness_ratio,
+                                  std::span<const double> y, double reference_stiffness_ratio,
+                                  const ExponentialFit& prior, int max_iterations) {
+  ExponentialFit fit = prior;
+  fit.stiffness_exponent = 0.0;
+  fit.rate_fitted = fit.amplitude_fitted = fit.stiffness_fitted = false;
+  fit.converged = false;
+  fit.solver_report.clear();
+  std::vector<double> log_stiffness;
+  bool off_reference = false;
+  for (const double ratio : stiffness_ratio) {
+    log_stiffness.push_back(std::log(ratio / reference_stiffness_ratio));
+    off_reference = off_reference || std::abs(log_stiffness.back()) > 1e-9;
+  }
+  const std::size_t distinct_x = distinct_count(x);
+  // One material only, away from the reference: its data cannot separate eq. (52) from the E/Y
+  // factor, so eq. (52) stays the prior's (the reference material's) and only q is fitted.
+  const bool single_material = distinct_count(stiffness_ratio) == 1;
+  const bool fit_amplitude = !single_material && distinct_x >= 2;
+  const bool fit_rate = !single_material && distinct_x >= kDistinctForRate;
+  std::vector<double> rate_starts{prior.rate};
+  if (fit_rate) rate_starts.insert(rate_starts.end(), {-20.0, -12.0, -8.0, -5.0, -3.0, -1.5, -0.5, 0.5, 2.0});
+  ceres::Solver::Options options = solver_options();
+  options.max_num_iterations = max_iterations;
+  double best_cost = std::numeric_limits<double>::infinity();
+  for (const double rate_start : rate_starts) {
+    double amplitude = prior.amplitude;
+    double rate = rate_start;
+    double offset = prior.offset;
+    double exponent = 0.0;
+    if (fit_amplitude) std::tie(amplitude, offset) = linear_amplitude_offset(x, y, rate);
+    ceres::Problem problem;
+    problem.AddResidualBlock(new ceres::AutoDiffCostFunction<StiffnessFormResiduals, ceres::DYNAMIC, 1, 1, 1, 1>(
+                                 new StiffnessFormResiduals{x, log_stiffness, y}, static_cast<int>(x.size())),
+                             nullptr, &amplitude, &rate, &offset, &exponent);
+    if (!fit_amplitude) problem.SetParameterBlockConstant(&amplitude);
+    if (!fit_rate) {
+      problem.SetParameterBlockConstant(&rate);
+    } else {
+      problem.SetParameterLowerBound(&rate, 0, -kRateBound);
+      problem.SetParameterUpperBound(&rate, 0, kRateBound);
+    }
+    if (single_material) problem.SetParameterBlockConstant(&offset);
+    if (!off_reference) problem.SetParameterBlockConstant(&exponent);
+    ceres::Solver::Summary summary;
+    ceres::Solve(options, &problem, &summary);
+    const bool converged = summary.termination_type == ceres::CONVERGENCE && std::isfinite(summary.final_cost);
+    if (!converged && fit.solver_report.empty()) fit.solver_report = summary.message;
+    fit.converged = fit.converged || converged;
+    if (std::isfinite(summary.final_cost) && summary.final_cost < best_cost * (1.0 - 1e-9)) {
+      best_cost = summary.final_cost;
+      fit.amplitude = amplitude;
+      fit.rate = rate;
+      fit.offset = offset;
+      fit.stiffness_exponent = exponent;
+    }
+  }
+  fit.amplitude_fitted = fit_amplitude;
+  fit.rate_fitted = fit_rate;
+  fit.stiffness_fitted = off_reference;
+  fit.rms = form_rms(fit, x, y, log_stiffness);
   return fit;
 }
 
 CalibrationResult calibrate(const std::vector<CalibrationCase>& cases, const CalibrationOptions& options) {
   if (cases.empty()) throw InputError("", "no calibration cases: expected at least one CSV of overlap and force");
+  if (options.form == TransitionForm::paper) require_one_material(cases);
   const double yield_factor = options.prior.yield_pressure_factor;
   CalibrationResult result;
   result.hertz = options.hertz;
@@ -316,6 +465,7 @@ CalibrationResult calibrate(const std::vector<CalibrationCase>& cases, const Cal
         constants.equivalent_radius / (mean_radius(data.body_i.semi_axes) + mean_radius(data.body_j.semi_axes));
     entry.yield_overlap = constants.yield_overlap;
     entry.yield_force = constants.yield_force;
+    entry.stiffness_ratio = constants.effective_modulus / constants.yield_stress;
     entry.profile = lambda_profile(constants, data.overlaps, data.forces);
 
     const double largest_overlap =
@@ -379,9 +529,21 @@ CalibrationResult calibrate(const std::vector<CalibrationCase>& cases, const Cal
     result.cases.push_back(std::move(entry));
   }
 
-  result.exponent_fitted = fit_shared_exponent(result.cases, yield_factor, options.prior.fit.transition_exponent,
-                                               result.law.fit.transition_exponent);
-  if (!result.exponent_fitted)
+  // Form stiffness_ratio with one material away from the reference: eq. (52) and n stay the
+  // prior's (the reference material's law is kept), each case's λ_max, ε_max are fitted with that n.
+  std::vector<double> case_stiffness_ratios;
+  for (const auto& entry : result.cases) case_stiffness_ratios.push_back(entry.stiffness_ratio);
+  const bool anchored = options.form == TransitionForm::stiffness_ratio && distinct_count(case_stiffness_ratios) == 1;
+  result.anchored = anchored;
+  if (anchored) {
+    for (auto& entry : result.cases)
+      entry.shared = fit_case(entry.profile, yield_factor, options.prior.fit.transition_exponent);
+    result.law.fit.transition_exponent = options.prior.fit.transition_exponent;
+  } else {
+    result.exponent_fitted = fit_shared_exponent(result.cases, yield_factor, options.prior.fit.transition_exponent,
+                                                 result.law.fit.transition_exponent);
+  }
+  if (!result.exponent_fitted && !anchored)
     result.warnings.push_back(
         "no case pins n (with n free, no fit reaches its lambda plateau inside the data, or n runs to a bound): n kept "
         "from the prior (" +
@@ -407,10 +569,53 @@ CalibrationResult calibrate(const std::vector<CalibrationCase>& cases, const Cal
   }
 
   auto& fit = result.law.fit;
-  const ExponentialFit lambda_fit =
-      fit_exponential(radius_ratios, lambda_maxima, options.prior.fit.lambda_amplitude, options.prior.fit.lambda_rate);
-  const ExponentialFit epsilon_fit = fit_exponential(radius_ratios, epsilon_maxima, options.prior.fit.epsilon_amplitude,
-                                                     options.prior.fit.epsilon_rate);
+  ExponentialFit lambda_fit;
+  ExponentialFit epsilon_fit;
+  if (options.form == TransitionForm::stiffness_ratio) {
+    const std::vector<double>& stiffness_ratios = case_stiffness_ratios;
+    const double reference = options.prior.fit.reference_stiffness_ratio;
+    const auto [lowest, highest] = std::minmax_element(stiffness_ratios.begin(), stiffness_ratios.end());
+    if (std::abs(std::log(*lowest / reference)) <= 1e-9 && std::abs(std::log(*highest / reference)) <= 1e-9)
+      throw InputError("ellc fit", "form stiffness_ratio: every case has E_e/Y = " + format_number(*lowest) +
+                                       ", the reference material's (reference_stiffness_ratio): the E_e/Y exponents "
+                                       "cannot be fitted; add data of a second material, or fit the paper's form");
+    const auto& prior = options.prior.fit;
+    ExponentialFit lambda_prior;
+    lambda_prior.amplitude = prior.lambda_amplitude;
+    lambda_prior.rate = prior.lambda_rate;
+    lambda_prior.offset = prior.lambda_offset;
+    ExponentialFit epsilon_prior;
+    epsilon_prior.amplitude = prior.epsilon_amplitude;
+    epsilon_prior.rate = prior.epsilon_rate;
+    epsilon_prior.offset = prior.epsilon_offset;
+    lambda_fit = fit_stiffness_form(radius_ratios, stiffness_ratios, lambda_maxima, reference, lambda_prior,
+                                    options.max_iterations);
+    epsilon_fit = fit_stiffness_form(radius_ratios, stiffness_ratios, epsilon_maxima, reference, epsilon_prior,
+                                     options.max_iterations);
+    fit.form = TransitionForm::stiffness_ratio;
+    fit.reference_stiffness_ratio = reference;
+    fit.lambda_stiffness_exponent = lambda_fit.stiffness_exponent;
+    fit.epsilon_stiffness_exponent = epsilon_fit.stiffness_exponent;
+    result.stiffness_fitted = true;
+    std::ostringstream range;
+    range.precision(4);
+    range << "the E_e/Y factor was fitted over E_e/Y = " << std::min(*lowest, reference) << " .. "
+          << std::max(*highest, reference) << " (reference " << reference << "); outside it is an extrapolation";
+    result.warnings.push_back(range.str());
+    if (anchored)
+      result.warnings.push_back(
+          "one material only: m, o, p, s, t, u and n kept from the prior (the reference "
+          "material's), only the E_e/Y exponents fitted");
+  } else {
+    lambda_fit = fit_exponential(radius_ratios, lambda_maxima, options.prior.fit.lambda_amplitude,
+                                 options.prior.fit.lambda_rate, options.max_iterations);
+    epsilon_fit = fit_exponential(radius_ratios, epsilon_maxima, options.prior.fit.epsilon_amplitude,
+                                  options.prior.fit.epsilon_rate, options.max_iterations);
+  }
+  require_converged(lambda_fit, "lambda_max", result.cases.size(), options.max_iterations);
+  require_converged(epsilon_fit, "epsilon_max", result.cases.size(), options.max_iterations);
+  result.lambda_rms = lambda_fit.rms;
+  result.epsilon_rms = epsilon_fit.rms;
   fit.lambda_amplitude = lambda_fit.amplitude;
   fit.lambda_rate = lambda_fit.rate;
   fit.lambda_offset = lambda_fit.offset;
@@ -419,7 +624,7 @@ CalibrationResult calibrate(const std::vector<CalibrationCase>& cases, const Cal
   fit.epsilon_offset = epsilon_fit.offset;
   result.rates_fitted = lambda_fit.rate_fitted;
   result.amplitudes_fitted = lambda_fit.amplitude_fitted;
-  if (!result.rates_fitted)
+  if (!result.rates_fitted && !(result.stiffness_fitted && !result.amplitudes_fitted))
     result.warnings.push_back(std::string("fewer than 4 distinct R_e/r^ among the cases: o and t kept from the prior") +
                               (result.amplitudes_fitted ? "" : ", and m and s too"));
   if (std::abs(fit.lambda_rate) >= kRateBound * (1 - 1e-6) || std::abs(fit.epsilon_rate) >= kRateBound * (1 - 1e-6))
@@ -453,15 +658,24 @@ std::string model_table_toml(const CalibrationResult& result) {
          "#       RMS relative force error of the calibrated law\n";
   char line[512];
   for (const auto& entry : result.cases) {
-    std::snprintf(line, sizeof line, "#   %s: %.5g, %.5g, %.5g, (%.5g, %.5g, %.4g), %s, %.3g %%\n", entry.name.c_str(),
+    std::snprintf(line, sizeof line, "#   %s: %.5g, %.5g, %.5g, (%.5g, %.5g, %.4g), %s, %.3g %%", entry.name.c_str(),
                   entry.radius_ratio, entry.shared.lambda_max, entry.shared.epsilon_max, entry.own.lambda_max,
                   entry.own.epsilon_max, entry.own.exponent, entry.plateau_reached ? "yes" : "no",
                   100.0 * entry.model_rms);
     out << line;
+    if (result.stiffness_fitted) {
+      std::snprintf(line, sizeof line, ", E_e/Y = %.4g", entry.stiffness_ratio);
+      out << line;
+    }
+    out << "\n";
   }
-  out << "# fitted: " << (result.amplitudes_fitted ? "m, " : "") << (result.rates_fitted ? "o, " : "") << "p, "
-      << (result.amplitudes_fitted ? "s, " : "") << (result.rates_fitted ? "t, " : "") << "u"
-      << (result.exponent_fitted ? ", n" : "") << "\n";
+  if (result.anchored) {
+    out << "# fitted: the E_e/Y exponents only (m, o, p, s, t, u, n are the prior's)\n";
+  } else {
+    out << "# fitted: " << (result.amplitudes_fitted ? "m, " : "") << (result.rates_fitted ? "o, " : "") << "p, "
+        << (result.amplitudes_fitted ? "s, " : "") << (result.rates_fitted ? "t, " : "") << "u"
+        << (result.exponent_fitted ? ", n" : "") << (result.stiffness_fitted ? ", E_e/Y exponents" : "") << "\n";
+  }
   for (const auto& warning : result.warnings) out << "# warning: " << warning << "\n";
   out << "[model]\n";
   out << "hertz = \"" << (result.hertz == HertzMode::exact ? "exact" : "hale") << "\"\n";
@@ -473,6 +687,12 @@ std::string model_table_toml(const CalibrationResult& result) {
                  {"t", fit.epsilon_rate},        {"u", fit.epsilon_offset},
                  {"n", fit.transition_exponent}, {"yield_pressure_factor", result.law.yield_pressure_factor}};
   for (const auto& [key, value] : entries) out << key << " = " << format_number(value) << "\n";
+  if (fit.form == TransitionForm::stiffness_ratio) {
+    out << "form = \"stiffness_ratio\"  # lambda_max, epsilon_max x (E_e/Y / reference_stiffness_ratio)^exponent\n";
+    out << "lambda_stiffness_exponent = " << format_number(fit.lambda_stiffness_exponent) << "\n";
+    out << "epsilon_stiffness_exponent = " << format_number(fit.epsilon_stiffness_exponent) << "\n";
+    out << "reference_stiffness_ratio = " << format_number(fit.reference_stiffness_ratio) << "\n";
+  }
   return out.str();
 }
 

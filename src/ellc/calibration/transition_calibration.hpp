@@ -13,6 +13,10 @@
 //  3. Across cases, eq. (52): λ_max = m exp(o x) + p, ε_max = s exp(t x) + u, x = R_e/r̂^{I,J}.
 //     Four or more distinct x fit all three constants; two or three fit m, p (s, u) with o (t)
 //     kept from the prior; one fits p (u) only.
+//     Form stiffness_ratio (several materials, issue 14): eq. (52) times (η/η_ref)^q with
+//     η = E_e/Y, fitted in one problem over all cases; q_λ, q_ε need a material with η ≠ η_ref
+//     (η_ref from the prior, NMC's by default). With the paper's form all cases must share one
+//     material. A cross-case fit that does not converge throws, naming the residual.
 // All least-squares problems are solved by Ceres (Levenberg–Marquardt, automatic derivatives).
 
 #include <span>
@@ -34,6 +38,9 @@ struct CalibrationOptions {
   // beyond δ_Y is elastic: it cannot tell anything about the transition.
   double elastic_tolerance = 0.02;
   std::size_t min_plastic_points = 4;  // loading points beyond δ_Y needed per case
+  // paper: one material, eq. (52). stiffness_ratio: several materials, eq. (52) × (E_e/Y ÷ η_ref)^q.
+  TransitionForm form = TransitionForm::paper;
+  int max_iterations = 300;  // Ceres iterations per cross-case fit; running out is an error (no convergence)
 };
 
 // One point of the λ profile (Fig. 11).
@@ -57,6 +64,7 @@ struct CaseCalibration {
   double equivalent_radius = 0.0;  // R_e
   double yield_overlap = 0.0;      // δ_Y
   double yield_force = 0.0;        // F_pY
+  double stiffness_ratio = 0.0;    // η = E_e/Y of the case's material pair
   std::vector<LambdaSample> profile;
   TransitionPoint own;               // step 1: λ_max, ε_max, n of this case alone
   bool own_exponent_fitted = false;  // false: the data does not pin n (no plateau), own.n is the prior's
@@ -75,6 +83,10 @@ struct CalibrationResult {
   bool rates_fitted = false;       // o, t fitted (≥ 4 distinct R_e/r̂)
   bool amplitudes_fitted = false;  // m, s fitted (≥ 2 distinct R_e/r̂)
   bool exponent_fitted = false;    // n fitted (some case reaches the plateau), else the prior's
+  bool stiffness_fitted = false;   // q_λ, q_ε fitted (form stiffness_ratio)
+  bool anchored = false;           // stiffness_ratio with one material: eq. (52) and n are the prior's
+  double lambda_rms = 0.0;         // RMS of λ_max(x, η) − per-case λ_max over the cases
+  double epsilon_rms = 0.0;        // same for ε_max
   std::vector<std::string> warnings;
 };
 
@@ -96,9 +108,22 @@ struct ExponentialFit {
   double offset = 0.0;
   bool rate_fitted = false;
   bool amplitude_fitted = false;
+  double stiffness_exponent = 0.0;  // q of the stiffness_ratio form (0 for the paper's)
+  bool stiffness_fitted = false;
+  bool converged = true;      // false: no start of the Ceres problem converged
+  double rms = 0.0;           // RMS residual of y
+  std::string solver_report;  // Ceres' message when not converged
 };
 [[nodiscard]] ExponentialFit fit_exponential(std::span<const double> x, std::span<const double> y,
-                                             double fixed_amplitude, double fixed_rate);
+                                             double fixed_amplitude, double fixed_rate, int max_iterations = 300);
+
+// The stiffness_ratio form: y = (amplitude exp(rate x) + offset) (η/η_ref)^q over cases of several
+// materials. x, η, y per case; which of amplitude, rate are fitted follows the distinct x as for
+// eq. (52); q is fitted when some η differs from η_ref, and with a single η (≠ η_ref) the
+// prior's amplitude, rate, offset are kept and only q is fitted.
+[[nodiscard]] ExponentialFit fit_stiffness_form(std::span<const double> x, std::span<const double> stiffness_ratio,
+                                                std::span<const double> y, double reference_stiffness_ratio,
+                                                const ExponentialFit& prior, int max_iterations = 300);
 
 // The whole calibration. Throws InputError (naming the case) for unusable data, e.g. data that
 // never leaves the elastic regime.

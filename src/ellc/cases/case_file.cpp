@@ -95,6 +95,25 @@ ModelSpec read_model(TableReader& table) {
   fit.epsilon_offset = table.number_or("u", fit.epsilon_offset);
   fit.transition_exponent = table.number_or("n", fit.transition_exponent);
   model.law.yield_pressure_factor = table.number_or("yield_pressure_factor", model.law.yield_pressure_factor);
+  // form = "stiffness_ratio": λ_max, ε_max also depend on E_e/Y (transition_fit.hpp); its exponents
+  // are required (a fit form without its E/Y coefficients would silently be the paper's).
+  const char* const stiffness_keys[] = {"lambda_stiffness_exponent", "epsilon_stiffness_exponent",
+                                        "reference_stiffness_ratio"};
+  if (table.choice("form", {"paper", "stiffness_ratio"}, "paper") == "stiffness_ratio") {
+    fit.form = TransitionForm::stiffness_ratio;
+    const std::string expected =
+        "a number (form = \"stiffness_ratio\" needs the E_e/Y exponents; `ellc fit "
+        "--form stiffness_ratio` writes them)";
+    for (const char* key : {stiffness_keys[0], stiffness_keys[1]})
+      if (!table.optional_number(key)) table.fail(key, "missing", expected);
+    fit.lambda_stiffness_exponent = table.number("lambda_stiffness_exponent");
+    fit.epsilon_stiffness_exponent = table.number("epsilon_stiffness_exponent");
+    fit.reference_stiffness_ratio = table.number_or("reference_stiffness_ratio", fit.reference_stiffness_ratio);
+  } else {
+    for (const char* key : stiffness_keys)
+      if (table.has(key))
+        table.fail(key, "given", "form = \"stiffness_ratio\" in [model] to use it (form is \"paper\")");
+  }
   table.finish();
   if (const std::string error = validation_error(model.law); !error.empty()) throw InputError(table.source(), error);
   return model;

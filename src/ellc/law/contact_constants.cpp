@@ -25,9 +25,10 @@ ContactConstants make_contact_constants(const ContactMaterial& material, const H
   const double yield_radius_sq = c.yield_contact_radius * c.yield_contact_radius;
   c.yield_overlap = yield_radius_sq / c.contact_radius_sq_per_overlap;
   c.yield_force = (2.0 / 3.0) * pi * yield_radius_sq * c.yield_pressure;
-  const double radius_ratio = c.equivalent_radius / mean_radius_sum;  // R_e / r̂^{I,J}
-  c.lambda_max = parameters.fit.lambda_max(radius_ratio);
-  c.epsilon_max = parameters.fit.epsilon_max(radius_ratio);
+  const double radius_ratio = c.equivalent_radius / mean_radius_sum;    // R_e / r̂^{I,J}
+  const double stiffness_ratio = c.effective_modulus / c.yield_stress;  // η = E_e/Y
+  c.lambda_max = parameters.fit.lambda_max_for(radius_ratio, stiffness_ratio);
+  c.epsilon_max = parameters.fit.epsilon_max_for(radius_ratio, stiffness_ratio);
   c.transition_exponent = parameters.fit.transition_exponent;
   c.plastic_limit_overlap = c.epsilon_max * c.epsilon_max * c.yield_overlap;
   return c;
@@ -64,7 +65,7 @@ std::string validation_error(const ContactConstants& c) {
   }
   if (!std::isfinite(c.lambda_max) || c.lambda_max < c.yield_pressure_factor)
     out << "lambda_max = " << c.lambda_max
-        << " (from the [model] fit m, o, p): expected a finite number >= " << c.yield_pressure_factor
+        << " (from the [model] fit m, o, p and its form): expected a finite number >= " << c.yield_pressure_factor
         << " (the pressure cannot fall after first yield)";
   else if (!std::isfinite(c.epsilon_max) || c.epsilon_max < 1.0)
     out << "epsilon_max = " << c.epsilon_max << " (from the [model] fit s, t, u): expected a finite number >= 1";

@@ -24,8 +24,8 @@ struct ContactConstants {
   double yield_contact_radius = 0.0;           // c_Y = p_Y π R_e f1³ / (2 E_e), from eq. (2)
   double yield_overlap = 0.0;                  // δ_Y = c_Y² f2 / (R_e f1²), eq. (9)
   double yield_force = 0.0;                    // F_pY = (2/3) π c_Y² p_Y
-  double lambda_max = 0.0;                     // eq. (52)
-  double epsilon_max = 0.0;                    // eq. (52)
+  double lambda_max = 0.0;                     // eq. (52), or its stiffness_ratio form (transition_fit.hpp)
+  double epsilon_max = 0.0;                    // eq. (52), likewise
   double transition_exponent = 0.0;            // n, eq. (28)
   double yield_pressure_factor = 1.6;          // λ at first yield
   double plastic_limit_overlap = 0.0;          // δ_max = ε_max² δ_Y, eq. (30)
