@@ -61,7 +61,7 @@ struct CalenderingSpec {
   // Background damping −γ m v during the hold and the relaxation only (1/µs): it removes the
   // kinetic energy a static reading must not have, without touching the loading (0: none).
   double rest_drag_rate = 0.0;
-  double max_relax_time = 0.0;  // µs, 0 → 5 × relax_time
+  double max_relax_time = 0.0;  // µs, 0 → 5 × relax_time (release = servo: 5 × max(relax_time, hold_time))
   // Release: `contact_lost` reads the released state when the plate has lost contact (after
   // relax_time, if given: only with gravity does a free layer come to rest); `servo` unloads the
   // plate by servo to the residual pressure p_r = release_pressure_fraction × the held pressure,
