@@ -169,7 +169,7 @@ engine::ParticleSet read_data(const std::string& path, std::istream& in, double 
       Body& body = bodies[id];
       body.centre = {to_number(path, line_number, "x", words[4]), to_number(path, line_number, "y", words[5]),
                      to_number(path, line_number, "z", words[6])};
-      if (words.size() == 10 && xlo && ylo)  // image flags: unwrap, then wrap into the box below
+      if (words.size() == 10 && xlo && xhi && ylo && yhi)  // image flags: unwrap, then wrap into the box below
         body.centre += Eigen::Vector3d(to_number(path, line_number, "ix", words[7]) * (*xhi - *xlo),
                                        to_number(path, line_number, "iy", words[8]) * (*yhi - *ylo), 0.0);
       body.has_centre = true;
@@ -192,7 +192,8 @@ engine::ParticleSet read_data(const std::string& path, std::istream& in, double 
       body.has_shape = true;
     }
   }
-  if (!xlo || !ylo) throw InputError(path, "xlo xhi / ylo yhi", "missing", "the box bounds of the header");
+  if (!xlo || !xhi || !ylo || !yhi)
+    throw InputError(path, "xlo xhi / ylo yhi", "missing", "the box bounds of the header");
   const double lx = *xhi - *xlo, ly = *yhi - *ylo;
   if (std::abs(lx - box.lx) > 1e-9 * box.lx || std::abs(ly - box.ly) > 1e-9 * box.ly)
     throw InputError(path, "xhi - xlo, yhi - ylo", format_number(lx) + " x " + format_number(ly) + " µm",

@@ -119,7 +119,7 @@ void read_walls(TableReader& table, const toml::node* material, bool contact_gav
 // only density (and seed, unused) go with it.
 void read_packing_file(TableReader& table, Scenario& scenario) {
   PackingSpec& spec = scenario.packing;
-  const std::filesystem::path given = *table.optional_string("file");
+  const std::filesystem::path given = table.optional_string("file").value_or("");
   spec.file = (given.is_absolute() ? given : std::filesystem::path(scenario.source).parent_path() / given).string();
   scenario.material_density = table.positive("density");
   spec.seed = static_cast<std::uint64_t>(table.integer_at_least("seed", 0, 1));
