@@ -10,6 +10,7 @@ import os
 import re
 import sys
 
+from . import aluminium_report as alu
 from . import calibration_report as cal
 from .elastic_report import elastic_errors, elastic_table, plot_elastic
 from .ellc_fit import ellc_fit
@@ -99,6 +100,17 @@ def main() -> int:
             mine = protocol_results(constants=ours)
             plot_protocols(mine, suffix="_our_constants", constants=ours)
             text = _replace(text, "protocols_ours", protocol_table(mine))
+    aluminium = alu.results()
+    if aluminium["models"]:
+        text = _replace(text, "aluminium_constants", alu.constants_table(aluminium))
+        text = _replace(text, "aluminium_holdout", alu.holdout_table(aluminium))
+        text = _replace(text, "aluminium_nmc", alu.nmc_check(aluminium))
+        alu.plot_holdout(aluminium)
+        summary["aluminium"] = {
+            "fit_cases": aluminium["fit_cases"], "held_out": aluminium["held_out"],
+            "nmc_fit_cases": aluminium.get("nmc_fit_cases", []), "models": aluminium["models"],
+            "cases": {n: {k: ({q: v for q, v in e.items() if q != "force"} if isinstance(e, dict) else e)
+                          for k, e in c.items() if k != "run"} for n, c in aluminium["cases"].items()}}
     with open(DOC, "w") as fh:
         fh.write(text)
     with open(SUMMARY, "w") as fh:

@@ -390,6 +390,7 @@ ExponentialFit fit_stiffness_form(std::span<const double> x, std::span<const dou
   fit.converged = false;
   fit.solver_report.clear();
   std::vector<double> log_stiffness;
+  log_stiffness.reserve(stiffness_ratio.size());
   bool off_reference = false;
   for (const double ratio : stiffness_ratio) {
     log_stiffness.push_back(std::log(ratio / reference_stiffness_ratio));
@@ -532,6 +533,7 @@ CalibrationResult calibrate(const std::vector<CalibrationCase>& cases, const Cal
   // Form stiffness_ratio with one material away from the reference: eq. (52) and n stay the
   // prior's (the reference material's law is kept), each case's λ_max, ε_max are fitted with that n.
   std::vector<double> case_stiffness_ratios;
+  case_stiffness_ratios.reserve(result.cases.size());
   for (const auto& entry : result.cases) case_stiffness_ratios.push_back(entry.stiffness_ratio);
   const bool anchored = options.form == TransitionForm::stiffness_ratio && distinct_count(case_stiffness_ratios) == 1;
   result.anchored = anchored;
