@@ -4,13 +4,16 @@ Runs the calendering example (examples/calendering.toml) with an [analysis] tabl
 `ellc dem` analyses its loaded and released states, then `ellc analyse` on the two saved packings
 at several voxel sizes (through-plane tortuosity only), and writes
 
-  docs/img/microstructure_tortuosity_porosity.png   tau_z against porosity, with Bruggeman
-  data/microstructure/calendering_convergence.csv   tau_z and porosity per state and voxel size
+  docs/img/microstructure_tortuosity_porosity_EXAMPLE.png   tau_z against porosity, with Bruggeman
+  data/microstructure/EXAMPLE_convergence.csv               tau_z and porosity per state and voxel size
 
 Usage (from the repository root; the DEM run takes ~10+ minutes on a loaded 2-core machine):
 
   nice -n 10 /usr/bin/python3 docs/microstructure_figure.py --cli build/apps/ellc --out out/microstructure
-  # again without the DEM run (reuses out/microstructure/run):
+  # the quick example (100 particles; what docs/microstructure.md shows, see there):
+  nice -n 10 /usr/bin/python3 docs/microstructure_figure.py --example calendering_quick --out out/microstructure_quick \
+      --spacings 1.6,1.2,0.8,0.6,0.4
+  # again without the DEM run (reuses OUT/run):
   /usr/bin/python3 docs/microstructure_figure.py --cli build/apps/ellc --out out/microstructure --skip-run
 """
 
@@ -41,13 +44,14 @@ def main():
     parser.add_argument("--out", default=str(ROOT / "out/microstructure"))
     parser.add_argument("--skip-run", action="store_true", help="reuse OUT/run from an earlier call")
     parser.add_argument("--spacings", default=",".join(str(s) for s in SPACINGS))
+    parser.add_argument("--example", default="calendering", help="calendering or calendering_quick (examples/NAME.toml)")
     args = parser.parse_args()
     out = pathlib.Path(args.out)
     out.mkdir(parents=True, exist_ok=True)
     run_directory = out / "run"
     if not args.skip_run:
         scenario = out / "calendering_analysis.toml"
-        scenario.write_text((ROOT / "examples/calendering.toml").read_text() + ANALYSIS)
+        scenario.write_text((ROOT / f"examples/{args.example}.toml").read_text() + ANALYSIS)
         run([args.cli, "dem", scenario, "-o", run_directory, "-q"])
 
     rows = []
@@ -65,10 +69,10 @@ def main():
                          "tortuosity_z": summary["tortuosity_z"], "iterations": solve["iterations"],
                          "seconds": solve["seconds"]})
 
-    table = ROOT / "data/microstructure/calendering_convergence.csv"
+    table = ROOT / f"data/microstructure/{args.example}_convergence.csv"
     table.parent.mkdir(parents=True, exist_ok=True)
     with open(table, "w", newline="") as handle:
-        handle.write("# docs/microstructure_figure.py: examples/calendering.toml, tau_z of the loaded and released "
+        handle.write(f"# docs/microstructure_figure.py --example {args.example}: tau_z of the loaded and released "
                      "states at several voxel sizes (ellc analyse --axes z)\n")
         writer = csv.DictWriter(handle, fieldnames=list(rows[0].keys()))
         writer.writeheader()
@@ -87,7 +91,7 @@ def main():
     states = [(state, microstructure.read_summary(run_directory / f"analysis_{state}"))
               for state in ("loaded", "released")]
     figure = microstructure.tortuosity_porosity_figure(
-        states, title="examples/calendering.toml: through-plane tortuosity of the loaded and released states")
+        states, title=f"examples/{args.example}.toml: through-plane tortuosity of the loaded and released states")
     axes = figure.axes[0]
     for index, state in enumerate(("loaded", "released")):
         chosen = [row for row in rows if row["state"] == state]
@@ -96,7 +100,7 @@ def main():
                   label=f"{state}: voxel sizes {min(r['voxel_size_um'] for r in chosen):g}-"
                         f"{max(r['voxel_size_um'] for r in chosen):g} um")
     axes.legend(fontsize=7)
-    image = ROOT / "docs/img/microstructure_tortuosity_porosity.png"
+    image = ROOT / f"docs/img/microstructure_tortuosity_porosity_{args.example}.png"
     figure.savefig(image)
     print(f"wrote {image}")
     return 0
