@@ -44,6 +44,12 @@ struct FitOptions {
 // the fit is refused: ten times the 1.5 % the synthetic benchmark asks of a fit (docs/calibration.md).
 constexpr double kPoorFitRms = 0.10;
 
+std::string percent(double fraction) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.3g %%", 100.0 * fraction);
+  return text;
+}
+
 // Sends what is written to file descriptor 2 (Ceres' and glog's messages) to a file while it lives.
 class StderrToFile {
  public:
@@ -108,7 +114,7 @@ void run_fit(const FitOptions& options) {
   std::string poor;
   for (const auto& entry : result.cases)
     if (!(entry.model_rms <= kPoorFitRms))
-      poor += (poor.empty() ? "" : ", ") + entry.name + " " + format_number(100.0 * entry.model_rms) + " %";
+      poor += (poor.empty() ? "" : ", ") + entry.name + " " + percent(entry.model_rms);
   const auto& constants = result.law.fit;
   for (const double value : {constants.lambda_amplitude, constants.lambda_rate, constants.lambda_offset,
                              constants.epsilon_amplitude, constants.epsilon_rate, constants.epsilon_offset,

@@ -84,12 +84,13 @@ CsvContent parse_overlap_force_csv(std::string_view text_of_file, const std::str
     if (fields.size() != column_count)
       throw InputError(where, "a row of " + std::to_string(fields.size()) + " fields: expected " +
                                   std::to_string(column_count) + " like the header");
+    const std::size_t row = content.overlaps.size() + 1;
     auto number = [&](std::ptrdiff_t column, const char* name) {
       const std::string& field = fields[static_cast<std::size_t>(column)];
       char* end = nullptr;
       const double value = std::strtod(field.c_str(), &end);
       if (field.empty() || end != field.c_str() + field.size() || !std::isfinite(value))
-        throw InputError(where, std::string(name) + " of data row " + std::to_string(content.overlaps.size() + 1),
+        throw InputError(where, std::string(name) + " of data row " + std::to_string(row),
                          "\"" + field + "\"", "a finite number");
       return value;
     };
