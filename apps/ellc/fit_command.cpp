@@ -116,14 +116,14 @@ void run_fit(const FitOptions& options) {
     if (!(entry.model_rms <= kPoorFitRms))
       poor += (poor.empty() ? "" : ", ") + entry.name + " " + percent(entry.model_rms);
   const auto& constants = result.law.fit;
-  for (const double value : {constants.lambda_amplitude, constants.lambda_rate, constants.lambda_offset,
-                             constants.epsilon_amplitude, constants.epsilon_rate, constants.epsilon_offset,
-                             constants.transition_exponent})
+  for (const double value :
+       {constants.lambda_amplitude, constants.lambda_rate, constants.lambda_offset, constants.epsilon_amplitude,
+        constants.epsilon_rate, constants.epsilon_offset, constants.transition_exponent})
     if (!std::isfinite(value)) poor += std::string(poor.empty() ? "" : ", ") + "a non-finite fitted constant";
   if (!poor.empty()) {
     if (!options.accept_poor_fit)
-      throw std::runtime_error("the calibrated law misses the data: RMS relative force error " + poor +
-                               " (limit " + format_number(100.0 * kPoorFitRms) +
+      throw std::runtime_error("the calibrated law misses the data: RMS relative force error " + poor + " (limit " +
+                               format_number(100.0 * kPoorFitRms) +
                                " %); nothing written. Check the data's columns and units, or pass --accept-poor-fit "
                                "to write the model anyway");
     std::fprintf(stderr, "ellc: warning: the calibrated law misses the data (%s); written anyway (--accept-poor-fit)\n",

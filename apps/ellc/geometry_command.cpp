@@ -101,11 +101,10 @@ void run_geometry(const GeometryOptions& options) {
   const NormalContact contact =
       normal_contact(g, material, mean_radius_sum, poses.model.hertz, poses.model.law, poses.max_overlap);
   if (const std::string error = validation_error(contact.constants); !error.empty())
-    throw InputError(options.poses_path, std::string(poses.body_j ? "body_I and body_J" : "body_I and the wall") +
-                                             " (semi_axes, position, orientation, [material]) at overlap " +
-                                             format_number(g.overlap) +
-                                             " µm: the contact constants of this configuration are out of range: " +
-                                             error);
+    throw InputError(options.poses_path,
+                     std::string(poses.body_j ? "body_I and body_J" : "body_I and the wall") +
+                         " (semi_axes, position, orientation, [material]) at overlap " + format_number(g.overlap) +
+                         " µm: the contact constants of this configuration are out of range: " + error);
   print_law(contact, poses.model.hertz);
 }
 

@@ -71,8 +71,7 @@ TEST_F(HostileCli, PlannedWorkIsPrintedAndCheckedBeforeTheRun) {
   EXPECT_FALSE(fs::exists(dir / "out" / "timeseries.csv"));
 
   // Never finishing: refused even with --force.
-  for (const auto& [key, line, field] :
-       std::vector<std::tuple<std::string, std::string, std::string>>{
+  for (const auto& [key, line, field] : std::vector<std::tuple<std::string, std::string, std::string>>{
            {"hold_time", "hold_time = 1e308", "calendering.hold_time"},
            {"time = 0.0", "time = 1e308", "settle.time"},
            {"youngs_modulus", "youngs_modulus = 1e300", "material.youngs_modulus"},

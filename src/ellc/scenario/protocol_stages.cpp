@@ -205,7 +205,8 @@ std::optional<Phase> LoadingProtocol::after_step(Simulation& sim) {
                             " particles (their centres are above it) instead of pressing them: it moves " +
                             format_number(std::abs(sim.walls()[kTopWall].velocity) * sim.settings().dt) +
                             " µm per step, too far for contact forces to stop the particles; lower "
-                            "calendering.speed (" + format_number(spec.speed) + " µm/µs) or approach_speed (" +
+                            "calendering.speed (" +
+                            format_number(spec.speed) + " µm/µs) or approach_speed (" +
                             format_number(spec.approach_speed) + " µm/µs), or time.dt");
       const bool thick_reached = spec.target_thickness && sim.gap() <= *spec.target_thickness;
       const bool pressure_reached = spec.target_pressure && pressure >= *spec.target_pressure;

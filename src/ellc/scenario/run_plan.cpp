@@ -13,14 +13,14 @@ namespace ellc::scenario {
 namespace {
 
 // Rough sizes, generous rather than tight (measured on the examples, docs/input_limits.md).
-constexpr double kBytesPerParticle = 2000.0;      // the particle arrays, body frames, wall histories
-constexpr double kPairsPerParticle = 16.0;        // candidate pairs with the skin, dense packing
-constexpr double kBytesPerPair = 700.0;           // slot, spare slot, result, budget, index
-constexpr double kBytesPerGridCell = 8.0;         // the dense cell grid's offsets
-constexpr double kCsvBytesPerRow = 600.0;         // ~40 columns
-constexpr double kVtkBytesPerParticle = 700.0;    // ASCII: position, id, radius, velocity, force, shape
+constexpr double kBytesPerParticle = 2000.0;    // the particle arrays, body frames, wall histories
+constexpr double kPairsPerParticle = 16.0;      // candidate pairs with the skin, dense packing
+constexpr double kBytesPerPair = 700.0;         // slot, spare slot, result, budget, index
+constexpr double kBytesPerGridCell = 8.0;       // the dense cell grid's offsets
+constexpr double kCsvBytesPerRow = 600.0;       // ~40 columns
+constexpr double kVtkBytesPerParticle = 700.0;  // ASCII: position, id, radius, velocity, force, shape
 constexpr double kCheckpointBytesPerParticle = 3000.0;
-constexpr double kImpossibleSteps = 1e13;         // months even at a million steps per second
+constexpr double kImpossibleSteps = 1e13;  // months even at a million steps per second
 
 // The smallest semi-axis the spec can draw: r̂ (1 − 2σ) times the smallest axis ratio factor.
 double smallest_semi_axis(const PackingSpec& spec) noexcept {
@@ -68,9 +68,9 @@ RunPlan plan_run(const Scenario& scenario) {
   const CalenderingSpec& calendering = scenario.calendering;
   const double count = static_cast<double>(spec.count);
   plan.smallest_semi_axis = smallest_semi_axis(spec);
-  plan.time_step = scenario.dt.value_or(scenario.time_step_safety * engine::rayleigh_time(plan.smallest_semi_axis,
-                                                                                           spec.density,
-                                                                                           scenario.contact.material));
+  plan.time_step =
+      scenario.dt.value_or(scenario.time_step_safety *
+                           engine::rayleigh_time(plan.smallest_semi_axis, spec.density, scenario.contact.material));
   const double largest = largest_bounding_radius(spec);
   const double area = scenario.box.lx * scenario.box.ly;
   const double solid_volume = count * 4.0 / 3.0 * std::numbers::pi * std::pow(spec.mean_radius, 3);
@@ -84,9 +84,9 @@ RunPlan plan_run(const Scenario& scenario) {
   const double load_speed =
       calendering.approach_speed > 0.0 ? std::min(calendering.approach_speed, calendering.speed) : calendering.speed;
   const double hold = calendering.max_hold_time > 0.0 ? calendering.max_hold_time : 5.0 * calendering.hold_time;
-  const double relax = calendering.relax_time > 0.0
-                           ? (calendering.max_relax_time > 0.0 ? calendering.max_relax_time : 5.0 * calendering.relax_time)
-                           : 0.0;
+  const double relax = calendering.relax_time > 0.0 ? (calendering.max_relax_time > 0.0 ? calendering.max_relax_time
+                                                                                        : 5.0 * calendering.relax_time)
+                                                    : 0.0;
   const Phase phases[] = {
       {"settling", "settle.time, settle.max_time", scenario.settle.time > 0.0 ? scenario.settle.max_time : 0.0},
       {"loading",
@@ -112,14 +112,14 @@ RunPlan plan_run(const Scenario& scenario) {
                     (std::floor(std::max(start, plan.layer_height) / cell) + 1.0);
   const double insertion_cells =
       std::floor(scenario.box.lx / (2.0 * largest)) * std::floor(scenario.box.ly / (2.0 * largest));
-  plan.memory_bytes = count * (kBytesPerParticle + kPairsPerParticle * kBytesPerPair) +
-                      kBytesPerGridCell * plan.grid_cells;
+  plan.memory_bytes =
+      count * (kBytesPerParticle + kPairsPerParticle * kBytesPerPair) + kBytesPerGridCell * plan.grid_cells;
 
   const OutputSpec& output = scenario.output;
   const double rows = plan.steps / static_cast<double>(output.csv_every) + 10.0;
   const double frames = output.vtk_every > 0 ? plan.steps / static_cast<double>(output.vtk_every) + 2.0 : 2.0;
-  plan.output_bytes = rows * kCsvBytesPerRow + frames * count * kVtkBytesPerParticle * 2.0 +
-                      count * kCheckpointBytesPerParticle;
+  plan.output_bytes =
+      rows * kCsvBytesPerRow + frames * count * kVtkBytesPerParticle * 2.0 + count * kCheckpointBytesPerParticle;
 
   const std::string dt_source =
       scenario.dt ? "time.dt"
@@ -127,8 +127,8 @@ RunPlan plan_run(const Scenario& scenario) {
                         " µm (material.youngs_modulus, packing.mean_radius, packing.aspect, packing.density, "
                         "time.mass_scaling)";
   const std::string steps_reason = "the " + std::string(longest->name) + " phase alone takes up to " +
-                                   approx(longest->time) + " µs (" + longest->fields + ") at dt = " +
-                                   approx(plan.time_step) + " µs (" + dt_source + ")";
+                                   approx(longest->time) + " µs (" + longest->fields +
+                                   ") at dt = " + approx(plan.time_step) + " µs (" + dt_source + ")";
   const auto finite_positive = [](double value) { return std::isfinite(value) && value > 0.0; };
   if (!finite_positive(plan.time_step))
     plan.impossible.push_back("the time step is " + approx(plan.time_step) + " µs (" + dt_source +
@@ -138,8 +138,7 @@ RunPlan plan_run(const Scenario& scenario) {
                               format_number(kImpossibleSteps) + " could ever finish: " + steps_reason);
   else if (plan.steps > kMaxPlannedSteps)
     plan.beyond_limits.push_back("the run plans up to " + approx(std::ceil(plan.steps)) +
-                                 " steps, above the limit of " + format_number(kMaxPlannedSteps) + ": " +
-                                 steps_reason);
+                                 " steps, above the limit of " + format_number(kMaxPlannedSteps) + ": " + steps_reason);
   const std::string grid_fields = "box.size " + format_number(scenario.box.lx) + " x " +
                                   format_number(scenario.box.ly) + " µm and a layer up to " +
                                   approx(std::max(start, plan.layer_height)) +
@@ -155,8 +154,8 @@ RunPlan plan_run(const Scenario& scenario) {
   else if (plan.memory_bytes > kMaxPlannedMemoryBytes)
     plan.beyond_limits.push_back("the run needs about " + format_bytes(plan.memory_bytes) +
                                  " of memory, above the limit of " + format_bytes(kMaxPlannedMemoryBytes) + ": " +
-                                 format_number(count) + " particles (packing.count) and " +
-                                 approx(plan.grid_cells) + " grid cells (" + grid_fields + ")");
+                                 format_number(count) + " particles (packing.count) and " + approx(plan.grid_cells) +
+                                 " grid cells (" + grid_fields + ")");
   if (std::isfinite(plan.output_bytes) && plan.output_bytes > kMaxPlannedOutputBytes)
     plan.beyond_limits.push_back("the run writes about " + format_bytes(plan.output_bytes) +
                                  " of output, above the limit of " + format_bytes(kMaxPlannedOutputBytes) +
