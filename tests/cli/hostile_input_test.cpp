@@ -64,6 +64,7 @@ TEST_F(HostileCli, PlannedWorkIsPrintedAndCheckedBeforeTheRun) {
   EXPECT_NE(run.output.find("ellc dem: plan: dt = "), std::string::npos) << run.output;
 
   // Beyond the limits: refused unless --force, before anything is written.
+  fs::remove_all(dir / "out");
   run = dem(quick_variant("hold_time", "hold_time = 1e9"));
   EXPECT_EQ(run.exit_code, 2) << run.output;
   EXPECT_NE(run.output.find("calendering.hold_time"), std::string::npos) << run.output;
