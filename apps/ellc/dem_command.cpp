@@ -9,8 +9,8 @@
 
 #include <algorithm>
 #include <charconv>
-#include <cmath>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -132,12 +132,15 @@ void print_summary(const scenario::RunSummary& s, const std::string& directory, 
 // The last line of defence of the rule "finite numbers or an error" (docs/input_limits.md): the
 // input bounds should make this unreachable, so a non-finite result is reported, not printed.
 void check_finite_summary(const scenario::RunSummary& s, const std::string& source) {
-  const std::pair<const char*, double> results[] = {
-      {"max pressure", s.max_pressure},         {"loaded thickness", s.loaded_thickness},
-      {"final thickness", s.final_thickness},   {"springback", s.springback_percent},
-      {"porosity", s.final_porosity},           {"plastic energy", s.plastic_dissipation},
-      {"plate work", s.plate_work},             {"energy residual", s.energy_residual},
-      {"simulated time", s.time}};
+  const std::pair<const char*, double> results[] = {{"max pressure", s.max_pressure},
+                                                    {"loaded thickness", s.loaded_thickness},
+                                                    {"final thickness", s.final_thickness},
+                                                    {"springback", s.springback_percent},
+                                                    {"porosity", s.final_porosity},
+                                                    {"plastic energy", s.plastic_dissipation},
+                                                    {"plate work", s.plate_work},
+                                                    {"energy residual", s.energy_residual},
+                                                    {"simulated time", s.time}};
   for (const auto& [name, value] : results)
     if (!std::isfinite(value))
       throw std::runtime_error(source + ": the run's " + name + " is " + format_number(value) +
@@ -314,7 +317,8 @@ void run_members(const DemOptions& options, const scenario::Scenario& loaded, co
 void check_plan(const DemOptions& options, const scenario::Scenario& loaded) {
   const scenario::RunPlan plan = scenario::plan_run(loaded);
   if (!options.quiet) std::fprintf(stderr, "ellc dem: plan: %s\n", scenario::describe_plan(plan).c_str());
-  if (!plan.impossible.empty()) throw InputError(loaded.source, plan.impossible.front() + " (refused even with --force)");
+  if (!plan.impossible.empty())
+    throw InputError(loaded.source, plan.impossible.front() + " (refused even with --force)");
   if (plan.beyond_limits.empty()) return;
   if (!options.force)
     throw InputError(loaded.source, plan.beyond_limits.front() + "; run with --force to start it anyway");

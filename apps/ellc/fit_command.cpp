@@ -45,6 +45,12 @@ struct FitOptions {
 // the fit is refused: ten times the 1.5 % the synthetic benchmark asks of a fit (docs/calibration.md).
 constexpr double kPoorFitRms = 0.10;
 
+std::string percent(double fraction) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.3g %%", 100.0 * fraction);
+  return text;
+}
+
 // Sends what is written to file descriptor 2 (Ceres' and glog's messages) to a file while it lives.
 class StderrToFile {
  public:
@@ -110,16 +116,16 @@ void run_fit(const FitOptions& options) {
   std::string poor;
   for (const auto& entry : result.cases)
     if (!(entry.model_rms <= kPoorFitRms))
-      poor += (poor.empty() ? "" : ", ") + entry.name + " " + format_number(100.0 * entry.model_rms) + " %";
+      poor += (poor.empty() ? "" : ", ") + entry.name + " " + percent(entry.model_rms);
   const auto& constants = result.law.fit;
-  for (const double value : {constants.lambda_amplitude, constants.lambda_rate, constants.lambda_offset,
-                             constants.epsilon_amplitude, constants.epsilon_rate, constants.epsilon_offset,
-                             constants.transition_exponent})
+  for (const double value :
+       {constants.lambda_amplitude, constants.lambda_rate, constants.lambda_offset, constants.epsilon_amplitude,
+        constants.epsilon_rate, constants.epsilon_offset, constants.transition_exponent})
     if (!std::isfinite(value)) poor += std::string(poor.empty() ? "" : ", ") + "a non-finite fitted constant";
   if (!poor.empty()) {
     if (!options.accept_poor_fit)
-      throw std::runtime_error("the calibrated law misses the data: RMS relative force error " + poor +
-                               " (limit " + format_number(100.0 * kPoorFitRms) +
+      throw std::runtime_error("the calibrated law misses the data: RMS relative force error " + poor + " (limit " +
+                               format_number(100.0 * kPoorFitRms) +
                                " %); nothing written. Check the data's columns and units, or pass --accept-poor-fit "
                                "to write the model anyway");
     std::fprintf(stderr, "ellc: warning: the calibrated law misses the data (%s); written anyway (--accept-poor-fit)\n",

@@ -64,6 +64,7 @@ TEST_F(HostileCli, PlannedWorkIsPrintedAndCheckedBeforeTheRun) {
   EXPECT_NE(run.output.find("ellc dem: plan: dt = "), std::string::npos) << run.output;
 
   // Beyond the limits: refused unless --force, before anything is written.
+  fs::remove_all(dir / "out");
   run = dem(quick_variant("hold_time", "hold_time = 1e9"));
   EXPECT_EQ(run.exit_code, 2) << run.output;
   EXPECT_NE(run.output.find("calendering.hold_time"), std::string::npos) << run.output;
@@ -71,8 +72,7 @@ TEST_F(HostileCli, PlannedWorkIsPrintedAndCheckedBeforeTheRun) {
   EXPECT_FALSE(fs::exists(dir / "out" / "timeseries.csv"));
 
   // Never finishing: refused even with --force.
-  for (const auto& [key, line, field] :
-       std::vector<std::tuple<std::string, std::string, std::string>>{
+  for (const auto& [key, line, field] : std::vector<std::tuple<std::string, std::string, std::string>>{
            {"hold_time", "hold_time = 1e308", "calendering.hold_time"},
            {"time = 0.0", "time = 1e308", "settle.time"},
            {"youngs_modulus", "youngs_modulus = 1e300", "material.youngs_modulus"},

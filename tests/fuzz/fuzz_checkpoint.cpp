@@ -6,7 +6,7 @@
 // checkpoint's magic and the header's reserved word (bytes 28..31) is zero, the harness writes
 // the right payload length and CRC-32 into the header first: the mutations then reach the content
 // checks, as a deliberately edited file would. A non-zero reserved word leaves the header as the
-// fuzzer made it (the length and checksum checks).
+// fuzzer made it: the length and checksum checks (the reader then refuses the reserved word).
 
 #include <cstdint>
 #include <cstring>

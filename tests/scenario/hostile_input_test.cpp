@@ -58,7 +58,8 @@ TEST(RunPlan, RunsThatWouldNeverEndAreRefusedByField) {
   plan = plan_with("time = 0.0", "time = 1e308");
   EXPECT_TRUE(mentions(plan.impossible, "settle.time"));
   plan = plan_with("hold_time", "hold_time = 20.0\nstart_gap = 1e9");
-  EXPECT_TRUE(mentions(plan.impossible, "calendering.start_gap") || mentions(plan.beyond_limits, "calendering.start_gap"));
+  EXPECT_TRUE(mentions(plan.impossible, "calendering.start_gap") ||
+              mentions(plan.beyond_limits, "calendering.start_gap"));
   // E = 1e300: dt ~ 1e-149 µs.
   plan = plan_with("youngs_modulus", "youngs_modulus = 1e300");
   EXPECT_LT(plan.time_step, 1e-140);

@@ -84,13 +84,14 @@ CsvContent parse_overlap_force_csv(std::string_view text_of_file, const std::str
     if (fields.size() != column_count)
       throw InputError(where, "a row of " + std::to_string(fields.size()) + " fields: expected " +
                                   std::to_string(column_count) + " like the header");
+    const std::size_t row = content.overlaps.size() + 1;
     auto number = [&](std::ptrdiff_t column, const char* name) {
       const std::string& field = fields[static_cast<std::size_t>(column)];
       char* end = nullptr;
       const double value = std::strtod(field.c_str(), &end);
       if (field.empty() || end != field.c_str() + field.size() || !std::isfinite(value))
-        throw InputError(where, std::string(name) + " of data row " + std::to_string(content.overlaps.size() + 1),
-                         "\"" + field + "\"", "a finite number");
+        throw InputError(where, std::string(name) + " of data row " + std::to_string(row), "\"" + field + "\"",
+                         "a finite number");
       return value;
     };
     content.overlaps.push_back(number(overlap_column, "overlap"));
@@ -116,23 +117,26 @@ void check_case_data(const CsvContent& content, const std::string& csv_path, con
     throw InputError(case_path, "body_I.semi_axes = " + axes_text(body_i.semi_axes) +
                                     ", body_J.semi_axes = " + axes_text(body_j.semi_axes) +
                                     " with the [material] given: expected bodies whose contact constants are finite "
-                                    "(docs/input_limits.md), but they give " + error);
+                                    "(docs/input_limits.md), but they give " +
+                                    error);
   const double reach = body_i.semi_axes.x() + body_j.semi_axes.x();
   for (std::size_t row = 0; row < content.overlaps.size(); ++row)
     if (!(std::abs(content.overlaps[row]) < reach))
-      throw InputError(csv_path, "overlap of data row " + std::to_string(row + 1),
-                       format_number(content.overlaps[row]),
+      throw InputError(csv_path, "overlap of data row " + std::to_string(row + 1), format_number(content.overlaps[row]),
                        "an overlap below a_I + a_J = " + format_number(reach) +
                            " µm (body_I.semi_axes[0] + body_J.semi_axes[0] of " + case_path +
                            "; at that overlap the centres meet)");
   const auto [low, high] = std::minmax_element(content.overlaps.begin(), content.overlaps.end());
   if (*low == *high)
-    throw InputError(csv_path, "overlap", "the same " + format_number(*low) + " µm in all " +
-                                              std::to_string(content.overlaps.size()) + " data rows",
-                     "data over a range of overlaps (a force-overlap curve)");
+    throw InputError(
+        csv_path, "overlap",
+        "the same " + format_number(*low) + " µm in all " + std::to_string(content.overlaps.size()) + " data rows",
+        "data over a range of overlaps (a force-overlap curve)");
 }
 
-CsvContent read_overlap_force_csv(const std::string& path) { return parse_overlap_force_csv(read_text_file(path), path); }
+CsvContent read_overlap_force_csv(const std::string& path) {
+  return parse_overlap_force_csv(read_text_file(path), path);
+}
 
 // "name.csv" and "name.incomplete.csv" → "name".
 std::string case_name_of(const fs::path& csv) {

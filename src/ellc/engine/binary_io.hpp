@@ -33,7 +33,8 @@ void get(std::istream& in, T& value) {
 inline void get(std::istream& in, bool& value) {
   std::uint8_t byte = 0;
   get(in, byte);
-  if (byte > 1) throw std::runtime_error("checkpoint is corrupt (a flag holds " + std::to_string(byte) + ", not 0 or 1)");
+  if (byte > 1)
+    throw std::runtime_error("checkpoint is corrupt (a flag holds " + std::to_string(byte) + ", not 0 or 1)");
   value = byte != 0;
 }
 
@@ -84,12 +85,11 @@ void get(std::istream& in, std::vector<T>& values, std::size_t element_bytes = s
   get(in, size);
   // Checked against what the stream still holds before anything is allocated.
   const std::streamoff left = remaining_bytes(in);
-  const std::uint64_t limit = left >= 0 ? static_cast<std::uint64_t>(left) / std::max<std::size_t>(element_bytes, 1)
-                                        : (std::uint64_t{1} << 34);
+  const std::uint64_t limit =
+      left >= 0 ? static_cast<std::uint64_t>(left) / std::max<std::size_t>(element_bytes, 1) : (std::uint64_t{1} << 34);
   if (size > limit)
     throw std::runtime_error("checkpoint is corrupt (an array of " + std::to_string(size) + " elements where " +
-                             (left >= 0 ? std::to_string(left) + " bytes are left" : "at most 2^34 are allowed") +
-                             ")");
+                             (left >= 0 ? std::to_string(left) + " bytes are left" : "at most 2^34 are allowed") + ")");
   values.resize(size);
   for (auto& value : values) get(in, value);
 }

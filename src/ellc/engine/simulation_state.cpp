@@ -114,13 +114,13 @@ void validate_state(const ParticleSet& p, const std::vector<PairSlot>& pairs,
   }
   if (walls[kBottomWall].side != 1 || walls[kTopWall].side != -1) corrupt("the walls' sides are not +1 and -1");
   if (!(walls[kBottomWall].position < walls[kTopWall].position))
-    corrupt("the top wall (z = " + shortest(walls[kTopWall].position) + ") is not above the bottom wall (z = " +
-            shortest(walls[kBottomWall].position) + ")");
+    corrupt("the top wall (z = " + shortest(walls[kTopWall].position) +
+            ") is not above the bottom wall (z = " + shortest(walls[kBottomWall].position) + ")");
   const std::size_t n = p.size();
-  for (const std::size_t size : {p.semi_axes.size(), p.mass.size(), p.inertia.size(), p.mean_radius.size(),
-                                 p.bounding_radius.size(), p.position.size(), p.orientation.size(), p.velocity.size(),
-                                 p.angular_velocity.size(), p.force.size(), p.torque.size(), wall_history[0].size(),
-                                 wall_history[1].size()})
+  for (const std::size_t size :
+       {p.semi_axes.size(), p.mass.size(), p.inertia.size(), p.mean_radius.size(), p.bounding_radius.size(),
+        p.position.size(), p.orientation.size(), p.velocity.size(), p.angular_velocity.size(), p.force.size(),
+        p.torque.size(), wall_history[0].size(), wall_history[1].size()})
     if (size != n)
       corrupt("a particle array holds " + std::to_string(size) + " entries for " + std::to_string(n) + " particles");
   std::vector<std::uint32_t> ids = p.id;
@@ -154,8 +154,7 @@ void validate_state(const ParticleSet& p, const std::vector<PairSlot>& pairs,
               ") is outside the walls z = " + shortest(walls[kBottomWall].position) + " .. " +
               shortest(walls[kTopWall].position));
     for (int w = 0; w < 2; ++w)
-      check_history(wall_history[w][k].history, wall_history[w][k].cache,
-                    particle + " on wall " + std::to_string(w));
+      check_history(wall_history[w][k].history, wall_history[w][k].cache, particle + " on wall " + std::to_string(w));
   }
   for (std::size_t index = 0; index < pairs.size(); ++index) {
     const PairSlot& pair = pairs[index];

@@ -225,7 +225,8 @@ std::string read_text_file(const std::string& path) {
   const fs::file_status status = fs::status(path, error);
   if (!fs::exists(status)) throw InputError(path, "no such file");
   if (fs::is_directory(status)) throw InputError(path, "is a directory: expected a file");
-  if (!fs::is_regular_file(status)) throw InputError(path, "is not a regular file (a device or a pipe?): expected a file");
+  if (!fs::is_regular_file(status))
+    throw InputError(path, "is not a regular file (a device or a pipe?): expected a file");
   const std::uintmax_t size = fs::file_size(path, error);
   if (!error && size > kMaxInputFileBytes)
     throw InputError(path, "is " + std::to_string(size) + " bytes long: expected an input file of at most " +

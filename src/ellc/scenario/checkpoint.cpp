@@ -94,6 +94,8 @@ std::string_view checked_payload(std::string_view bytes, const std::string& sour
     throw InputError(source, std::string("corrupt checkpoint: the checksum does not match (") + text +
                                  "): the file was changed or damaged after it was written");
   }
+  if (field_at<std::uint32_t>(bytes, 28) != 0)
+    throw InputError(source, "corrupt checkpoint: its reserved header word is not 0");
   return payload;
 }
 

@@ -49,7 +49,7 @@ struct Checkpoint {
 [[nodiscard]] Checkpoint read_checkpoint(const std::string& path, const Scenario& scenario,
                                          engine::EngineSettings settings);
 // The same from the file's bytes; `source` names it in messages (the fuzz harness uses this).
-[[nodiscard]] Checkpoint parse_checkpoint(std::string_view bytes, const std::string& source,
-                                          const Scenario& scenario, engine::EngineSettings settings);
+[[nodiscard]] Checkpoint parse_checkpoint(std::string_view bytes, const std::string& source, const Scenario& scenario,
+                                          engine::EngineSettings settings);
 
 }  // namespace ellc::scenario

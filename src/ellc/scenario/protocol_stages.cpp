@@ -38,6 +38,13 @@ double layer_top(const ParticleSet& particles) {
   return top;
 }
 
+std::size_t particles_above_plate(const Simulation& sim) noexcept {
+  const double plate = sim.walls()[kTopWall].position;
+  std::size_t above = 0;
+  for (const auto& centre : sim.particles().position) above += centre.z() > plate ? 1 : 0;
+  return above;
+}
+
 }  // namespace
 
 const char* phase_name(Phase phase) noexcept {
@@ -217,22 +224,20 @@ std::optional<Phase> LoadingProtocol::after_step(Simulation& sim) {
           set_plate_velocity(sim, -spec.speed);
         }
       }
+      // Particles whose centres are above the plate were passed through, not pressed: the plate
+      // moved too far per step (and its pressure, or the target, means nothing then).
+      if (const std::size_t above = particles_above_plate(sim); above > 0)
+        throw ProtocolError("the top plate passed through " + std::to_string(above) +
+                            " particles (their centres are above it) instead of pressing them: it moves " +
+                            format_number(std::abs(sim.walls()[kTopWall].velocity) * sim.settings().dt) +
+                            " µm per step, too far for contact forces to stop the particles; lower "
+                            "calendering.speed (" +
+                            format_number(spec.speed) + " µm/µs) or approach_speed (" +
+                            format_number(spec.approach_speed) + " µm/µs), or time.dt");
       const bool thick_reached = spec.target_thickness && sim.gap() <= *spec.target_thickness;
       const bool pressure_reached = spec.target_pressure && pressure >= *spec.target_pressure;
       if (thick_reached || pressure_reached) return Phase::hold;
       if (sim.gap() * box_.lx * box_.ly <= solid_volume_) {
-        // Particles whose centres are above the plate were passed through, not pressed: the plate
-        // moved too far per step, and the pressure target is not to blame.
-        const double plate = sim.walls()[kTopWall].position;
-        std::size_t above = 0;
-        for (const auto& centre : sim.particles().position) above += centre.z() > plate ? 1 : 0;
-        if (above > 0)
-          throw ProtocolError("the top plate passed through " + std::to_string(above) +
-                              " particles (their centres are above it) instead of pressing them: it moves " +
-                              format_number(std::abs(sim.walls()[kTopWall].velocity) * sim.settings().dt) +
-                              " µm per step, too far for contact forces to stop the particles; lower "
-                              "calendering.speed (" + format_number(spec.speed) + " µm/µs) or approach_speed (" +
-                              format_number(spec.approach_speed) + " µm/µs), or time.dt");
         throw ProtocolError("calendering.target_pressure = " + format_number(spec.target_pressure.value_or(0.0)) +
                             " MPa cannot be reached: the top plate reached the thickness of the solid (" +
                             format_number(sim.gap()) + " µm) at " + format_number(pressure) +

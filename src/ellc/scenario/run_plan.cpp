@@ -13,14 +13,14 @@ namespace ellc::scenario {
 namespace {
 
 // Rough sizes, generous rather than tight (measured on the examples, docs/input_limits.md).
-constexpr double kBytesPerParticle = 2000.0;      // the particle arrays, body frames, wall histories
-constexpr double kPairsPerParticle = 16.0;        // candidate pairs with the skin, dense packing
-constexpr double kBytesPerPair = 700.0;           // slot, spare slot, result, budget, index
-constexpr double kBytesPerGridCell = 8.0;         // the dense cell grid's offsets
-constexpr double kCsvBytesPerRow = 600.0;         // ~40 columns
-constexpr double kVtkBytesPerParticle = 700.0;    // ASCII: position, id, radius, velocity, force, shape
+constexpr double kBytesPerParticle = 2000.0;    // the particle arrays, body frames, wall histories
+constexpr double kPairsPerParticle = 16.0;      // candidate pairs with the skin, dense packing
+constexpr double kBytesPerPair = 700.0;         // slot, spare slot, result, budget, index
+constexpr double kBytesPerGridCell = 8.0;       // the dense cell grid's offsets
+constexpr double kCsvBytesPerRow = 600.0;       // ~40 columns
+constexpr double kVtkBytesPerParticle = 700.0;  // ASCII: position, id, radius, velocity, force, shape
 constexpr double kCheckpointBytesPerParticle = 3000.0;
-constexpr double kImpossibleSteps = 1e13;         // months even at a million steps per second
+constexpr double kImpossibleSteps = 1e13;  // months even at a million steps per second
 
 // The smallest semi-axis the spec can draw: r̂ (1 − 2σ) times the smallest axis ratio factor.
 double smallest_semi_axis(const PackingSpec& spec) noexcept {
@@ -33,6 +33,13 @@ double smallest_semi_axis(const PackingSpec& spec) noexcept {
   return radius * smallest;
 }
 
+// An estimate in messages: three significant digits (format_number is for what the user wrote).
+std::string approx(double value) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.3g", value);
+  return text;
+}
+
 struct Phase {
   const char* name;
   const char* fields;
@@ -43,13 +50,13 @@ struct Phase {
 
 std::string format_bytes(double bytes) {
   static constexpr const char* kUnits[] = {"B", "kB", "MB", "GB", "TB", "PB", "EB"};
-  if (!std::isfinite(bytes)) return format_number(bytes) + " B";
+  if (!std::isfinite(bytes)) return approx(bytes) + " B";
   int unit = 0;
   while (bytes >= 1000.0 && unit < 6) {
     bytes /= 1000.0;
     ++unit;
   }
-  if (bytes >= 1000.0) return format_number(bytes * 1e18) + " B";
+  if (bytes >= 1000.0) return approx(bytes * 1e18) + " B";
   char text[32];
   std::snprintf(text, sizeof text, "%.3g %s", bytes, kUnits[unit]);
   return text;
@@ -61,9 +68,9 @@ RunPlan plan_run(const Scenario& scenario) {
   const CalenderingSpec& calendering = scenario.calendering;
   const double count = static_cast<double>(spec.count);
   plan.smallest_semi_axis = smallest_semi_axis(spec);
-  plan.time_step = scenario.dt.value_or(scenario.time_step_safety * engine::rayleigh_time(plan.smallest_semi_axis,
-                                                                                           spec.density,
-                                                                                           scenario.contact.material));
+  plan.time_step =
+      scenario.dt.value_or(scenario.time_step_safety *
+                           engine::rayleigh_time(plan.smallest_semi_axis, spec.density, scenario.contact.material));
   const double largest = largest_bounding_radius(spec);
   const double area = scenario.box.lx * scenario.box.ly;
   const double solid_volume = count * 4.0 / 3.0 * std::numbers::pi * std::pow(spec.mean_radius, 3);
@@ -77,9 +84,9 @@ RunPlan plan_run(const Scenario& scenario) {
   const double load_speed =
       calendering.approach_speed > 0.0 ? std::min(calendering.approach_speed, calendering.speed) : calendering.speed;
   const double hold = calendering.max_hold_time > 0.0 ? calendering.max_hold_time : 5.0 * calendering.hold_time;
-  const double relax = calendering.relax_time > 0.0
-                           ? (calendering.max_relax_time > 0.0 ? calendering.max_relax_time : 5.0 * calendering.relax_time)
-                           : 0.0;
+  const double relax = calendering.relax_time > 0.0 ? (calendering.max_relax_time > 0.0 ? calendering.max_relax_time
+                                                                                        : 5.0 * calendering.relax_time)
+                                                    : 0.0;
   const Phase phases[] = {
       {"settling", "settle.time, settle.max_time", scenario.settle.time > 0.0 ? scenario.settle.max_time : 0.0},
       {"loading",
@@ -105,42 +112,41 @@ RunPlan plan_run(const Scenario& scenario) {
                     (std::floor(std::max(start, plan.layer_height) / cell) + 1.0);
   const double insertion_cells =
       std::floor(scenario.box.lx / (2.0 * largest)) * std::floor(scenario.box.ly / (2.0 * largest));
-  plan.memory_bytes = count * (kBytesPerParticle + kPairsPerParticle * kBytesPerPair) +
-                      kBytesPerGridCell * plan.grid_cells;
+  plan.memory_bytes =
+      count * (kBytesPerParticle + kPairsPerParticle * kBytesPerPair) + kBytesPerGridCell * plan.grid_cells;
 
   const OutputSpec& output = scenario.output;
   const double rows = plan.steps / static_cast<double>(output.csv_every) + 10.0;
   const double frames = output.vtk_every > 0 ? plan.steps / static_cast<double>(output.vtk_every) + 2.0 : 2.0;
-  plan.output_bytes = rows * kCsvBytesPerRow + frames * count * kVtkBytesPerParticle * 2.0 +
-                      count * kCheckpointBytesPerParticle;
+  plan.output_bytes =
+      rows * kCsvBytesPerRow + frames * count * kVtkBytesPerParticle * 2.0 + count * kCheckpointBytesPerParticle;
 
   const std::string dt_source =
       scenario.dt ? "time.dt"
-                  : "safety x Rayleigh time of the smallest semi-axis " + format_number(plan.smallest_semi_axis) +
+                  : "safety x Rayleigh time of the smallest semi-axis " + approx(plan.smallest_semi_axis) +
                         " µm (material.youngs_modulus, packing.mean_radius, packing.aspect, packing.density, "
                         "time.mass_scaling)";
   const std::string steps_reason = "the " + std::string(longest->name) + " phase alone takes up to " +
-                                   format_number(longest->time) + " µs (" + longest->fields + ") at dt = " +
-                                   format_number(plan.time_step) + " µs (" + dt_source + ")";
+                                   approx(longest->time) + " µs (" + longest->fields +
+                                   ") at dt = " + approx(plan.time_step) + " µs (" + dt_source + ")";
   const auto finite_positive = [](double value) { return std::isfinite(value) && value > 0.0; };
   if (!finite_positive(plan.time_step))
-    plan.impossible.push_back("the time step is " + format_number(plan.time_step) + " µs (" + dt_source +
+    plan.impossible.push_back("the time step is " + approx(plan.time_step) + " µs (" + dt_source +
                               "): expected a finite number > 0");
   else if (!std::isfinite(plan.simulated_time) || !std::isfinite(plan.steps) || plan.steps > kImpossibleSteps)
-    plan.impossible.push_back("the run would take " + format_number(plan.steps) + " steps, more than " +
+    plan.impossible.push_back("the run would take " + approx(plan.steps) + " steps, more than " +
                               format_number(kImpossibleSteps) + " could ever finish: " + steps_reason);
   else if (plan.steps > kMaxPlannedSteps)
-    plan.beyond_limits.push_back("the run plans up to " + format_number(std::ceil(plan.steps)) +
-                                 " steps, above the limit of " + format_number(kMaxPlannedSteps) + ": " +
-                                 steps_reason);
+    plan.beyond_limits.push_back("the run plans up to " + approx(std::ceil(plan.steps)) +
+                                 " steps, above the limit of " + format_number(kMaxPlannedSteps) + ": " + steps_reason);
   const std::string grid_fields = "box.size " + format_number(scenario.box.lx) + " x " +
                                   format_number(scenario.box.ly) + " µm and a layer up to " +
-                                  format_number(std::max(start, plan.layer_height)) +
+                                  approx(std::max(start, plan.layer_height)) +
                                   " µm high (packing.insertion_fraction, calendering.start_gap) in cells of " +
-                                  format_number(cell) + " µm (packing.mean_radius, packing.aspect, time.skin)";
+                                  approx(cell) + " µm (packing.mean_radius, packing.aspect, time.skin)";
   if (!std::isfinite(plan.grid_cells) || plan.grid_cells > kMaxGridCells || !std::isfinite(insertion_cells) ||
       insertion_cells > kMaxGridCells)
-    plan.impossible.push_back("the cell grid would need " + format_number(std::max(plan.grid_cells, insertion_cells)) +
+    plan.impossible.push_back("the cell grid would need " + approx(std::max(plan.grid_cells, insertion_cells)) +
                               " cells, beyond the 32-bit cell index (at most " + format_number(kMaxGridCells) +
                               "): " + grid_fields);
   else if (!std::isfinite(plan.memory_bytes))
@@ -148,8 +154,8 @@ RunPlan plan_run(const Scenario& scenario) {
   else if (plan.memory_bytes > kMaxPlannedMemoryBytes)
     plan.beyond_limits.push_back("the run needs about " + format_bytes(plan.memory_bytes) +
                                  " of memory, above the limit of " + format_bytes(kMaxPlannedMemoryBytes) + ": " +
-                                 format_number(count) + " particles (packing.count) and " +
-                                 format_number(plan.grid_cells) + " grid cells (" + grid_fields + ")");
+                                 format_number(count) + " particles (packing.count) and " + approx(plan.grid_cells) +
+                                 " grid cells (" + grid_fields + ")");
   if (std::isfinite(plan.output_bytes) && plan.output_bytes > kMaxPlannedOutputBytes)
     plan.beyond_limits.push_back("the run writes about " + format_bytes(plan.output_bytes) +
                                  " of output, above the limit of " + format_bytes(kMaxPlannedOutputBytes) +
@@ -159,14 +165,9 @@ RunPlan plan_run(const Scenario& scenario) {
 }
 
 std::string describe_plan(const RunPlan& plan) {
-  char steps[32];
-  std::snprintf(steps, sizeof steps, "%.3g", std::ceil(plan.steps));
-  char time[32];
-  std::snprintf(time, sizeof time, "%.3g", plan.simulated_time);
-  char dt[32];
-  std::snprintf(dt, sizeof dt, "%.3g", plan.time_step);
-  return std::string("dt = ") + dt + " µs, at most " + steps + " steps (" + time + " µs simulated), memory ~" +
-         format_bytes(plan.memory_bytes) + ", output ~" + format_bytes(plan.output_bytes);
+  return "dt = " + approx(plan.time_step) + " µs, at most " + approx(std::ceil(plan.steps)) + " steps (" +
+         approx(plan.simulated_time) + " µs simulated), memory ~" + format_bytes(plan.memory_bytes) + ", output ~" +
+         format_bytes(plan.output_bytes);
 }
 
 }  // namespace ellc::scenario

@@ -23,14 +23,14 @@ inline constexpr double kMaxPlannedOutputBytes = 50e9;                       // 
 inline constexpr double kMaxGridCells = 2147483647.0;
 
 struct RunPlan {
-  double time_step = 0.0;           // µs: [time] dt, or safety × the Rayleigh time of the smallest semi-axis
-  double smallest_semi_axis = 0.0;  // µm, the smallest the packing spec can draw
-  double layer_height = 0.0;        // µm: the insertion region the particles start in
-  double simulated_time = 0.0;      // µs, at most (settle, load, hold, unload, relax at their longest)
-  double steps = 0.0;               // at most
-  double memory_bytes = 0.0;        // particles, pair list and the cell grids
-  double output_bytes = 0.0;        // CSV, VTK frames, checkpoint, summary
-  double grid_cells = 0.0;          // cells of the dense cell grid over box × layer height
+  double time_step = 0.0;                  // µs: [time] dt, or safety × the Rayleigh time of the smallest semi-axis
+  double smallest_semi_axis = 0.0;         // µm, the smallest the packing spec can draw
+  double layer_height = 0.0;               // µm: the insertion region the particles start in
+  double simulated_time = 0.0;             // µs, at most (settle, load, hold, unload, relax at their longest)
+  double steps = 0.0;                      // at most
+  double memory_bytes = 0.0;               // particles, pair list and the cell grids
+  double output_bytes = 0.0;               // CSV, VTK frames, checkpoint, summary
+  double grid_cells = 0.0;                 // cells of the dense cell grid over box × layer height
   std::vector<std::string> beyond_limits;  // each names the estimate, the limit and the fields behind it
   std::vector<std::string> impossible;     // refused even with --force
 };

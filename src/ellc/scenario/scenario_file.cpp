@@ -293,8 +293,9 @@ void cross_check(const Scenario& scenario) {
   // The plate pushes particles at its own speed: faster than the runaway limit it would stop the
   // run (or, far faster, pass through the layer within a step).
   const CalenderingSpec& calendering = scenario.calendering;
-  for (const auto& [key, speed] : {std::pair{"speed", calendering.speed}, std::pair{"approach_speed", calendering.approach_speed},
-                                   std::pair{"lift_speed", calendering.lift_speed}})
+  for (const auto& [key, speed] :
+       {std::pair{"speed", calendering.speed}, std::pair{"approach_speed", calendering.approach_speed},
+        std::pair{"lift_speed", calendering.lift_speed}})
     if (speed > scenario.max_speed)
       throw InputError(scenario.source, std::string("calendering.") + key, format_number(speed),
                        "a plate speed <= time.max_speed = " + format_number(scenario.max_speed) +
