@@ -55,6 +55,12 @@ class DemRun {
   // Steps at most `max_steps` (stopping early where `stop` says), with the GIL released.
   std::uint64_t advance(std::uint64_t max_steps, const std::function<bool(const ScenarioRunner&)>& stop) {
     check_steppable();
+    // Under the GIL: no other thread can be between this check and the flag.
+    stepping_ = true;
+    struct Idle {
+      bool& flag;
+      ~Idle() { flag = false; }
+    } idle{stepping_};
     try {
       py::gil_scoped_release release;
       return runner_->advance(max_steps, stop);
@@ -64,7 +70,15 @@ class DemRun {
     }
   }
 
+  // While another Python thread steps this run (the GIL is released then), what walks the
+  // engine's lists (contacts, checkpoints, the summary) would read them mid-step.
+  void check_idle() const {
+    if (stepping_)
+      throw std::runtime_error("this run is being stepped in another thread; read it when that call has returned");
+  }
+
   void check_steppable() const {
+    check_idle();
     if (!failure_.empty())
       throw std::runtime_error("this run failed at step " + std::to_string(sim().step_count()) + " (" + failure_ +
                                "); it cannot be stepped further: start a new run, or load a checkpoint written "
@@ -81,6 +95,7 @@ class DemRun {
  private:
   std::unique_ptr<ScenarioRunner> runner_;
   std::string failure_;
+  bool stepping_ = false;  // read and written under the GIL only
 };
 
 const double* coefficients(const Eigen::Vector3d& vector) { return vector.data(); }
@@ -185,8 +200,8 @@ void bind_dem(py::module_& module) {
            py::arg("text"), py::arg("source"), py::arg("output_directory") = "", py::arg("restart_path") = "",
            py::arg("force") = false, py::arg("write_files") = true, py::arg("parallel_threshold") = -1)
       .def(
-          "advance", [](DemRun& run, long long steps) { return run.advance(step_budget(steps), {}); },
-          py::arg("steps"), "Steps at most `steps` times (fewer if the protocol ends); returns the steps taken.")
+          "advance", [](DemRun& run, long long steps) { return run.advance(step_budget(steps), {}); }, py::arg("steps"),
+          "Steps at most `steps` times (fewer if the protocol ends); returns the steps taken.")
       .def(
           "advance_until_phase",
           [](DemRun& run, const std::string& name, long long steps) {
@@ -206,8 +221,8 @@ void bind_dem(py::module_& module) {
       .def("check_steppable", &DemRun::check_steppable)
       .def_property_readonly("done", [](const DemRun& run) { return run.runner().done(); })
       .def_property_readonly("failure", &DemRun::failure)
-      .def_property_readonly("phase",
-                             [](const DemRun& run) { return std::string(scenario::phase_name(run.runner().state().phase)); })
+      .def_property_readonly(
+          "phase", [](const DemRun& run) { return std::string(scenario::phase_name(run.runner().state().phase)); })
       .def_property_readonly("step", [](const DemRun& run) { return run.sim().step_count(); })
       .def_property_readonly("time", [](const DemRun& run) { return run.sim().time(); })
       .def_property_readonly("dt", [](const DemRun& run) { return run.sim().settings().dt; })
@@ -255,16 +270,26 @@ void bind_dem(py::module_& module) {
             throw py::value_error("particle field '" + name + "' does not exist");
           },
           py::arg("name"))
-      .def("contacts", [](const DemRun& run) { return contacts_of(run.sim()); })
+      .def("contacts",
+           [](const DemRun& run) {
+             run.check_idle();
+             return contacts_of(run.sim());
+           })
       .def(
           "write_checkpoint",
           [](const DemRun& run, const std::string& path) {
+            run.check_idle();
             py::gil_scoped_release release;
             run.runner().write_checkpoint(path);
           },
           py::arg("path"))
-      .def("write_summary", [](const DemRun& run) { return run.runner().write_summary(); })
+      .def("write_summary",
+           [](const DemRun& run) {
+             run.check_idle();
+             return run.runner().write_summary();
+           })
       .def("summary_text", [](const DemRun& run) {
+        run.check_idle();
         std::ostringstream out;
         scenario::write_summary_lines(out, run.runner().scenario().source, run.runner().summary());
         return out.str();

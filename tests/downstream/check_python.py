@@ -65,9 +65,10 @@ def main(package_root, curve_csv, source_dir):
         assert os.path.getsize(os.path.join(scratch, "case2.png")) > 0
         # ellc.dem: a scenario from a dict, a few steps, the state as arrays.
         scenario = {"material": {"youngs_modulus": 142000.0, "poisson_ratio": 0.25, "yield_stress": 7900.0},
-                    "box": {"size": [42.0, 42.0]}, "packing": {"count": 10, "seed": 3},
+                    "box": {"size": [42.0, 42.0]},
+                    "packing": {"count": 10, "mean_radius": 4.0, "density": 4.7e-3, "seed": 3},
                     "time": {"mass_scaling": 1e4}, "settle": {"time": 0.0},
-                    "calendering": {"target_pressure": 50.0}}
+                    "calendering": {"speed": 0.05, "lift_speed": 0.05, "target_pressure": 50.0}}
         run = ellc.dem.Run(scenario, write_files=False)
         run.run(50)
         assert run.step == 50 and run.particles.position.shape == (10, 3), run

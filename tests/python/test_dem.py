@@ -220,12 +220,20 @@ def test_stepping_releases_the_gil():
         run._core.advance(600)  # one call: the GIL is either released for all of it or held
         window["end"] = time.monotonic()
 
-    ticks = []
+    ticks, refused = [], []
     worker = threading.Thread(target=step)
     worker.start()
     while worker.is_alive():
         ticks.append(time.monotonic())
+        if "start" in window and not refused:
+            # Reading what the step rewrites is refused while it runs (or the step is over).
+            try:
+                run.contacts()
+                refused.append("end" in window or not worker.is_alive())
+            except RuntimeError as error:
+                refused.append("another thread" in str(error))
     worker.join()
+    assert refused == [True]
     inside = [t for t in ticks if window["start"] < t < window["end"]]
     assert window["end"] - window["start"] > 0.05
     assert len(inside) > 1000, "the main thread did not run while the engine stepped"
