@@ -40,8 +40,10 @@ suite=bookworm
 # The Debian archives this machine's apt uses (deb822 .sources or the classic sources.list).
 apt_uri() {
   local pattern=$1
-  { grep -hE '^URIs:' /etc/apt/sources.list.d/*.sources 2>/dev/null | awk '{print $2}'
-    grep -hE '^deb ' /etc/apt/sources.list 2>/dev/null | awk '{print $2}'; } | grep -E "$pattern" | head -1
+  # Either file may be missing (Debian 12 images often have only the .sources): with pipefail a
+  # grep that finds no file must not end the script.
+  { grep -hE '^URIs:' /etc/apt/sources.list.d/*.sources 2>/dev/null | awk '{print $2}' || true
+    grep -hE '^deb ' /etc/apt/sources.list 2>/dev/null | awk '{print $2}' || true; } | { grep -E "$pattern" || true; } | head -1
 }
 mirror=${DEB_MIRROR:-$(apt_uri 'debian/?$')}
 security_mirror=${DEB_SECURITY_MIRROR:-$(apt_uri 'debian-security/?$')}
