@@ -32,7 +32,13 @@ except ImportError:  # plots only; the bindings are not built or not on the path
     HAVE_CORE = False
 
 if HAVE_CORE:
+    import importlib
+
     from ellc import dem  # noqa: E402,F401  (the DEM engine: ellc.dem.Scenario, ellc.dem.Run)
+
+    # The star import bound the compiled submodule ellc._ellc.microstructure to this name; the
+    # Python module ellc/microstructure.py wraps it (and adds the figures), so it takes the name.
+    microstructure = importlib.import_module("ellc.microstructure")
 
 
 def calibrate_files(data, hertz="hale", **options):

@@ -55,16 +55,16 @@ TEST_F(CalibrationInput, SidecarTomlAndExtraColumns) {
 
 TEST_F(CalibrationInput, ExplicitPairingAndCommentLine) {
   const std::string toml = write("geometry.toml", kCaseToml);
-  const std::string csv = write("a.csv", "# from somewhere\nforce,overlap\n7000,0.1\n");
+  const std::string csv = write("a.csv", "# from somewhere\nforce,overlap\n7000,0.1\n21000,0.2\n");
   const CalibrationCase explicit_case = read_calibration_case(csv + ":" + toml);
   EXPECT_DOUBLE_EQ(explicit_case.overlaps[0], 0.1);
-  const std::string commented = write("b.csv", "# case = geometry.toml\noverlap,force\n0.1,7000\n");
+  const std::string commented = write("b.csv", "# case = geometry.toml\noverlap,force\n0.1,7000\n0.2,21000\n");
   EXPECT_EQ(read_calibration_case(commented).name, "b");
 }
 
 TEST_F(CalibrationInput, ErrorsNameTheFileLineAndField) {
   write("bad.toml", kCaseToml);
-  EXPECT_NE(message_of(write("bad.csv", "overlap,force\n0.1,7000\n0.2,x\n")).find("bad.csv:3: force = \"x\""),
+  EXPECT_NE(message_of(write("bad.csv", "overlap,force\n0.1,7000\n0.2,x\n")).find("bad.csv:3: force of data row 2 = \"x\""),
             std::string::npos);
   EXPECT_NE(message_of(write("nohead.csv", "delta,F\n0.1,1\n")).find("overlap and force"), std::string::npos);
   EXPECT_NE(message_of(write("alone.csv", "overlap,force\n0.1,1\n")).find("alone.toml"), std::string::npos);

@@ -64,8 +64,9 @@ struct BranchStiffness {
   double normal = 0.0;          // k_n
 };
 
-BranchStiffness branch_stiffness(DampingModel model, const ContactConstants& constants,
-                                 const ElasticBranch& branch) noexcept {
+BranchStiffness branch_stiffness(DampingModel model, const ContactConstants& constants, double overlap,
+                                 double max_overlap) noexcept {
+  const ElasticBranch branch = elastic_branch(constants, overlap, std::max(max_overlap, overlap));
   const double x = std::max(branch.elastic_overlap, 0.0);
   BranchStiffness stiffness;
   stiffness.contact_radius = branch.radius_scale == 1.0
@@ -137,14 +138,14 @@ double tangential_stiffness(const InteractionContext& context, const BranchStiff
              ? 8.0 * context.shear_modulus * branch.contact_radius
              : context.model.tangential_stiffness_ratio * branch.normal;
 }
+}  // namespace
 
-// The contact model on the elastic branch `elastic` the law's force lies on.
-ContactForce contact_force_on_branch(const InteractionContext& context, const ContactConstants& constants,
-                                     double law_force, const ElasticBranch& elastic,
-                                     const ContactKinematics& kinematics, double dt, ContactHistory& history) noexcept {
+ContactForce contact_force(const InteractionContext& context, const ContactConstants& constants, double overlap,
+                           double law_force, const ContactKinematics& kinematics, double dt,
+                           ContactHistory& history) noexcept {
   const ContactModel& model = context.model;
   const Eigen::Vector3d& n = kinematics.normal;
-  const BranchStiffness branch = branch_stiffness(model.damping, constants, elastic);
+  const BranchStiffness branch = branch_stiffness(model.damping, constants, overlap, history.max_overlap);
   const double normal_speed = kinematics.relative_velocity.dot(n);  // > 0 when separating
   const double normal_force = damped_normal_force(
       law_force, viscous_damping(model.normal_damping, kinematics.effective_mass, branch.normal), normal_speed);
@@ -182,20 +183,6 @@ ContactForce contact_force_on_branch(const InteractionContext& context, const Co
   result.damping_dissipation += dashpot;
   result.friction_dissipation = tangential_work - stored - dashpot + released;
   return result;
-}
-
-}  // namespace
-
-ContactForce contact_force(const InteractionContext& context, const ContactConstants& constants, double overlap,
-                           double law_force, const ContactKinematics& kinematics, double dt,
-                           ContactHistory& history) noexcept {
-  const ElasticBranch branch = elastic_branch(constants, overlap, std::max(history.max_overlap, overlap));
-  return contact_force_on_branch(context, constants, law_force, branch, kinematics, dt, history);
-}
-
-ContactForce contact_force(const InteractionContext& context, const ContactConstants& constants, const LawResult& law,
-                           const ContactKinematics& kinematics, double dt, ContactHistory& history) noexcept {
-  return contact_force_on_branch(context, constants, law.force, law.elastic, kinematics, dt, history);
 }
 
 }  // namespace ellc

@@ -27,7 +27,6 @@
 #include "ellc/geometry/narrow_phase.hpp"
 #include "ellc/hertz/elliptic_hertz.hpp"
 #include "ellc/law/contact_constants.hpp"
-#include "ellc/law/contact_law.hpp"
 #include "ellc/law/transition_fit.hpp"
 #include "ellc/material/material.hpp"
 
@@ -103,10 +102,5 @@ struct ContactForce {
 [[nodiscard]] ContactForce contact_force(const InteractionContext& context, const ContactConstants& constants,
                                          double overlap, double law_force, const ContactKinematics& kinematics,
                                          double dt, ContactHistory& history) noexcept;
-// The same from the law's whole result at `overlap` (what both engines call): the result carries
-// the elastic branch, so the unloading branch is not derived a second time.
-[[nodiscard]] ContactForce contact_force(const InteractionContext& context, const ContactConstants& constants,
-                                         const LawResult& law, const ContactKinematics& kinematics, double dt,
-                                         ContactHistory& history) noexcept;
 
 }  // namespace ellc

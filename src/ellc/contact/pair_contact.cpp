@@ -94,7 +94,8 @@ PairForces pair_forces(const PairSolution& solution, const Eigen::Vector3d& cent
                                          motion_i.angular_velocity.cross(lever_i),
                                      motion_i.mass * motion_j.mass / (motion_i.mass + motion_j.mass)};
   PairForces forces;
-  forces.contact = contact_force(context, *solution.constants, solution.law, kinematics, dt, history);
+  forces.contact =
+      contact_force(context, *solution.constants, solution.overlap, solution.law.force, kinematics, dt, history);
   forces.torque_on_i = -lever_i.cross(forces.contact.on_j);
   forces.torque_on_j = lever_j.cross(forces.contact.on_j);
   return forces;
@@ -108,7 +109,8 @@ WallForces wall_forces(const PairSolution& solution, const Eigen::Vector3d& cent
       solution.normal,
       Eigen::Vector3d(0.0, 0.0, wall_velocity) - motion.velocity - motion.angular_velocity.cross(lever), motion.mass};
   WallForces forces;
-  forces.contact = contact_force(context, *solution.constants, solution.law, kinematics, dt, history);
+  forces.contact =
+      contact_force(context, *solution.constants, solution.overlap, solution.law.force, kinematics, dt, history);
   forces.lever_cross_force = lever.cross(forces.contact.on_j);
   return forces;
 }

@@ -29,25 +29,10 @@ enum class Regime : std::uint8_t { separated, elastic, elastic_plastic, fully_pl
   return "unknown";
 }
 
-// The elastic curve F = coefficient · x^{3/2} the contact is on, x = δ − offset: Hertz (eq. 10)
-// while loading or if the contact never yielded, the unloading branch (eq. 49) below δ_*. Its
-// contact radius follows eq. (9) with the branch's radius, c² = (c_c²/δ) · radius_scale · x, where
-// radius_scale is R_e,pmax/R_e on unloading and 1 otherwise. Stiffnesses that scale with the
-// contact size (damping, tangential spring) use this radius, so they follow the branch.
-struct ElasticBranch {
-  double coefficient = 0.0;      // C or C_UL
-  double elastic_overlap = 0.0;  // x = δ, or δ − δ_p on unloading
-  double radius_scale = 1.0;     // R/R_e
-};
-
 struct LawResult {
   double force = 0.0;        // normal force, ≥ 0
   double max_overlap = 0.0;  // δ_* after this evaluation (the only history)
   Regime regime = Regime::separated;
-  // The elastic branch at (δ, δ_* after this evaluation): what elastic_branch() gives, returned
-  // with the force so that the contact model (damping, tangential spring) does not derive the
-  // unloading branch a second time. Left at its defaults when δ ≤ 0.
-  ElasticBranch elastic;
 };
 
 // Derived unloading branch for a history δ_* > δ_Y (docs/model.md §4).
@@ -59,7 +44,6 @@ struct UnloadingBranch {
   double plastic_overlap = 0.0;        // δ_p = δ_* (1 − R_e/R_e,p), eq. (34)
   double force_ratio = 1.0;            // β = F_*,pmax / F_*,pY, eq. (46)
   double unloading_radius = 0.0;       // R_e,pmax = β² R_e,p, eq. (48)
-  double radius_scale = 1.0;           // R_e,pmax / R_e
   double unloading_coefficient = 0.0;  // (4/3) E_e sqrt(R_e,pmax) f2^{-3/2}, eq. (49)
 };
 
@@ -108,14 +92,12 @@ struct LoadingPoint {
   branch.fully_plastic_force =
       law_detail::truncated_hertz_force(c, c.yield_pressure, c.contact_radius_sq_per_overlap * max_overlap);
   branch.hertz_force = c.hertz_coefficient * law_detail::pow_three_halves(max_overlap);
-  // Three independent divisions (no 1/x of a quotient, no R/R_e): the same numbers to rounding.
   const double radius_growth = branch.hertz_force / branch.fully_plastic_force;  // R_e,p / R_e
   branch.plastic_radius = c.equivalent_radius * radius_growth;
-  branch.plastic_overlap = max_overlap * (1.0 - branch.fully_plastic_force / branch.hertz_force);
+  branch.plastic_overlap = max_overlap * (1.0 - 1.0 / radius_growth);
   branch.force_ratio = branch.loading_force / branch.fully_plastic_force;
-  branch.radius_scale = branch.force_ratio * branch.force_ratio * radius_growth;
-  branch.unloading_radius = branch.radius_scale * c.equivalent_radius;
-  branch.unloading_coefficient = c.hertz_coefficient * std::sqrt(branch.radius_scale);
+  branch.unloading_radius = branch.force_ratio * branch.force_ratio * branch.plastic_radius;
+  branch.unloading_coefficient = c.hertz_coefficient * std::sqrt(branch.unloading_radius / c.equivalent_radius);
   return branch;
 }
 
@@ -128,29 +110,36 @@ struct LoadingPoint {
 // returned max_overlap; deleting history on separation is the caller's policy (docs/model.md §5).
 [[nodiscard]] inline LawResult evaluate_contact(const ContactConstants& c, double overlap,
                                                 double max_overlap) noexcept {
-  if (!(overlap > 0.0)) return {0.0, max_overlap, Regime::separated, {}};
+  if (!(overlap > 0.0)) return {0.0, max_overlap, Regime::separated};
   if (overlap >= max_overlap) {
     const LoadingPoint point = loading_force(c, overlap);
-    return {point.force, overlap, point.regime, {c.hertz_coefficient, overlap, 1.0}};
+    return {point.force, overlap, point.regime};
   }
   if (max_overlap <= c.yield_overlap)  // never yielded: Hertz both ways, δ_p = 0
-    return {c.hertz_coefficient * law_detail::pow_three_halves(overlap),
-            max_overlap,
-            Regime::elastic,
-            {c.hertz_coefficient, overlap, 1.0}};
+    return {c.hertz_coefficient * law_detail::pow_three_halves(overlap), max_overlap, Regime::elastic};
   const UnloadingBranch branch = unloading_branch(c, max_overlap);
   const double elastic_overlap = overlap - branch.plastic_overlap;  // δ_UL, eq. (32)
-  const ElasticBranch elastic{branch.unloading_coefficient, elastic_overlap, branch.radius_scale};
-  if (elastic_overlap <= 0.0) return {0.0, max_overlap, Regime::separated, elastic};
-  return {branch.unloading_coefficient * law_detail::pow_three_halves(elastic_overlap), max_overlap, Regime::unloading,
-          elastic};
+  if (elastic_overlap <= 0.0) return {0.0, max_overlap, Regime::separated};
+  return {branch.unloading_coefficient * law_detail::pow_three_halves(elastic_overlap), max_overlap, Regime::unloading};
 }
+
+// The elastic curve F = coefficient · x^{3/2} the contact is on, x = δ − offset: Hertz (eq. 10)
+// while loading or if the contact never yielded, the unloading branch (eq. 49) below δ_*. Its
+// contact radius follows eq. (9) with the branch's radius, c² = (c_c²/δ) · radius_scale · x, where
+// radius_scale is R_e,pmax/R_e on unloading and 1 otherwise. Stiffnesses that scale with the
+// contact size (damping, tangential spring) use this radius, so they follow the branch.
+struct ElasticBranch {
+  double coefficient = 0.0;      // C or C_UL
+  double elastic_overlap = 0.0;  // x = δ, or δ − δ_p on unloading
+  double radius_scale = 1.0;     // R/R_e
+};
 
 [[nodiscard]] inline ElasticBranch elastic_branch(const ContactConstants& c, double overlap,
                                                   double max_overlap) noexcept {
   if (overlap >= max_overlap || max_overlap <= c.yield_overlap) return {c.hertz_coefficient, overlap, 1.0};
   const UnloadingBranch branch = unloading_branch(c, max_overlap);
-  return {branch.unloading_coefficient, overlap - branch.plastic_overlap, branch.radius_scale};
+  return {branch.unloading_coefficient, overlap - branch.plastic_overlap,
+          branch.unloading_radius / c.equivalent_radius};
 }
 
 }  // namespace ellc
