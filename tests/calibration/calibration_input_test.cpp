@@ -64,8 +64,9 @@ TEST_F(CalibrationInput, ExplicitPairingAndCommentLine) {
 
 TEST_F(CalibrationInput, ErrorsNameTheFileLineAndField) {
   write("bad.toml", kCaseToml);
-  EXPECT_NE(message_of(write("bad.csv", "overlap,force\n0.1,7000\n0.2,x\n")).find("bad.csv:3: force of data row 2 = \"x\""),
-            std::string::npos);
+  EXPECT_NE(
+      message_of(write("bad.csv", "overlap,force\n0.1,7000\n0.2,x\n")).find("bad.csv:3: force of data row 2 = \"x\""),
+      std::string::npos);
   EXPECT_NE(message_of(write("nohead.csv", "delta,F\n0.1,1\n")).find("overlap and force"), std::string::npos);
   EXPECT_NE(message_of(write("alone.csv", "overlap,force\n0.1,1\n")).find("alone.toml"), std::string::npos);
   write("short.toml", kCaseToml);
