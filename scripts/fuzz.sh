@@ -14,6 +14,7 @@
 # Usage: scripts/fuzz.sh [target...]   (default: case poses scenario checkpoint fit_table)
 set -euo pipefail
 cd "$(dirname "$0")/.."
+source scripts/compiler_cache.sh
 seconds=${ELLC_FUZZ_SECONDS:-30}
 targets=("$@")
 ((${#targets[@]} > 0)) || targets=(case poses scenario checkpoint fit_table)

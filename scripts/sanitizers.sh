@@ -22,6 +22,7 @@
 # Usage: scripts/sanitizers.sh [asan|tsan|all]   (default all)
 set -euo pipefail
 cd "$(dirname "$0")/.."
+source scripts/compiler_cache.sh
 which=${1:-all}
 jobs=$(nproc)
 generator=()

@@ -3,11 +3,16 @@
 # (C++ unit and physics tests, CLI, geometry, engine, LAMMPS under MPI, Python, FE smoke run).
 set -euo pipefail
 cd "$(dirname "$0")/.."
+began=$(date +%s)
 bash scripts/setup.sh
+stage=$(date +%s)
 bash scripts/build.sh
+echo "== build took $(($(date +%s) - stage)) s"
 # mpirun refuses to run as root unless told; CI runs as root.
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
+stage=$(date +%s)
 ctest --test-dir build --output-on-failure -j "$(nproc)"
+echo "== ctest took $(($(date +%s) - stage)) s"
 
 # Guard rails, after the tests above: formatting, clang-tidy, and the ASan+UBSan and TSan
 # builds with their tests (scripts/sanitizers.sh says which subset), and fuzzing of the input
@@ -31,3 +36,4 @@ if ((${#failed[@]} > 0)); then
   exit 1
 fi
 echo "== guard rails passed: format, clang-tidy, ASan+UBSan, TSan, fuzzing"
+echo "== test_all.sh took $(($(date +%s) - began)) s"

@@ -5,7 +5,12 @@
 #
 # The compile commands come from build-tidy, configured (not built) as a Debug build so that
 # ELLC_ASSERT conditions are real code to the checks; LAMMPS, Python, benchmarks and tests off.
+#
+# A file found clean is not checked again until it, a header it includes, its compile command,
+# .clang-tidy or clang-tidy's version changes (scripts/tidy_cache.py; the cache is
+# ${XDG_CACHE_HOME:-~/.cache}/ellc-tidy, shared by clones; ELLC_TIDY_CACHE=0 checks every file).
 set -euo pipefail
+shopt -s nullglob  # no report files when every file was unchanged
 cd "$(dirname "$0")/.."
 clang_tidy=${CLANG_TIDY:-clang-tidy-15}
 generator=()
@@ -21,11 +26,27 @@ fi
 out=$(mktemp -d)
 trap 'rm -rf "$out"' EXIT
 start=$(date +%s)
+version=$("$clang_tidy" --version | grep -o 'version [0-9.]*')
+cache=${XDG_CACHE_HOME:-$HOME/.cache}/ellc-tidy
+all=${#files[@]}
+declare -A keys=()
+if [[ ${ELLC_TIDY_CACHE:-1} != 0 ]]; then
+  # The files whose key has no clean record (one "file<TAB>key" line each).
+  pending=$(python3 scripts/tidy_cache.py keys build-tidy "$cache" "$version" "${files[@]}")
+  files=()
+  while IFS=$'\t' read -r file key; do
+    [[ -n $file ]] || continue
+    files+=("$file")
+    keys[$file]=$key
+  done <<<"$pending"
+fi
 # One clang-tidy per file, $(nproc) at a time; each writes its own report.
-printf '%s\n' "${files[@]}" | xargs -P "$(nproc)" -I{} sh -c \
-  '"$1" -p build-tidy --quiet "$2" >"$3/$(echo "$2" | tr / _).log" 2>&1 || true' _ "$clang_tidy" {} "$out"
+if ((${#files[@]} > 0)); then
+  printf '%s\n' "${files[@]}" | xargs -P "$(nproc)" -I{} sh -c \
+    '"$1" -p build-tidy --quiet "$2" >"$3/$(echo "$2" | tr / _).log" 2>&1 || true' _ "$clang_tidy" {} "$out"
+fi
 # Findings in headers are reported once per including source: count each location once.
-findings=$(cat "$out"/*.log | grep -E '^[^ ]+:[0-9]+:[0-9]+: (warning|error):' | sort -u || true)
+findings=$(cat "$out"/*.log /dev/null | grep -E '^[^ ]+:[0-9]+:[0-9]+: (warning|error):' | sort -u || true)
 seconds=$(($(date +%s) - start))
 if [[ -n $findings ]]; then
   cat "$out"/*.log | grep -vE '^[0-9]+ warnings? (and [0-9]+ errors? )?generated\.$' >&2
@@ -33,4 +54,9 @@ if [[ -n $findings ]]; then
   echo "$findings" >&2
   exit 1
 fi
-echo "tidy: ${#files[@]} files clean ($("$clang_tidy" --version | grep -o 'version [0-9.]*'), ${seconds} s)"
+clean_keys=()
+for file in "${files[@]}"; do
+  [[ ${keys[$file]:-none} != none ]] && clean_keys+=("${keys[$file]}")
+done
+((${#clean_keys[@]} == 0)) || python3 scripts/tidy_cache.py mark "$cache" "${clean_keys[@]}"
+echo "tidy: $all files clean ($version, ${seconds} s; $((all - ${#files[@]})) unchanged since a clean check)"
