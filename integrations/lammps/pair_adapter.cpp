@@ -9,8 +9,8 @@ PairEvaluation evaluate_pair(const BodyState& a, const BodyState& b, const ellc:
   const ellc::Ellipsoid body_a(a.semi_axes, {a.position, a.orientation});
   const ellc::Ellipsoid body_b(b.semi_axes, {b.position, b.orientation});
   ellc::ContactCache scratch;
-  return evaluate_pair({body_a, body_a.mean_radius(), a}, {body_b, body_b.mean_radius(), b}, context, timestep,
-                       history, scratch);
+  return evaluate_pair({body_a, body_a.mean_radius(), a}, {body_b, body_b.mean_radius(), b}, context, timestep, history,
+                       scratch);
 }
 
 PairEvaluation evaluate_pair(const AtomBody& a, const AtomBody& b, const ellc::InteractionContext& context,

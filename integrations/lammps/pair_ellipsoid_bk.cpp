@@ -370,10 +370,9 @@ void PairEllipsoidBK::compute(int eflag, int vflag) {
       const int b = i_is_a ? j : i;
       const PosedAtom& atom_a = atoms_[static_cast<std::size_t>(a)];
       const PosedAtom& atom_b = atoms_[static_cast<std::size_t>(b)];
-      const PairEvaluation result = evaluate_pair({atom_a.body, atom_a.mean_radius, atom_a.motion},
-                                                  {atom_b.body, atom_b.mean_radius, atom_b.motion},
-                                                  pair_contexts_[type_index(type[i], type[j])], timestep, history,
-                                                  pair_scratch_);
+      const PairEvaluation result = evaluate_pair(
+          {atom_a.body, atom_a.mean_radius, atom_a.motion}, {atom_b.body, atom_b.mean_radius, atom_b.motion},
+          pair_contexts_[type_index(type[i], type[j])], timestep, history, pair_scratch_);
       if (result.geometry_failed && narrow_phase_failures_++ == 0)
         error->warning(FLERR, style_prefix() + "the narrow phase did not converge for atoms " + std::to_string(tag[a]) +
                                   " and " + std::to_string(tag[b]) + " at step " + std::to_string(update->ntimestep) +

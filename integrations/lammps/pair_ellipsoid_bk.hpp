@@ -74,7 +74,9 @@ class PairEllipsoidBK : public LAMMPS_NS::Pair {
   // For fix wall/ellipsoid/bk: the bodies this step's compute() posed, owned and ghost atoms,
   // valid from compute() until the atoms move (computed_at() is that step).
   [[nodiscard]] LAMMPS_NS::bigint computed_at() const { return computed_at_; }
-  [[nodiscard]] const ellc::Ellipsoid& posed_body(int index) const { return atoms_[static_cast<std::size_t>(index)].body; }
+  [[nodiscard]] const ellc::Ellipsoid& posed_body(int index) const {
+    return atoms_[static_cast<std::size_t>(index)].body;
+  }
   [[nodiscard]] double mean_radius(int index) const { return atoms_[static_cast<std::size_t>(index)].mean_radius; }
   [[nodiscard]] const BodyState& motion(int index) const { return atoms_[static_cast<std::size_t>(index)].motion; }
   // pair_coeff I I as given (the material of type I), or null when that line is missing.
@@ -119,13 +121,13 @@ class PairEllipsoidBK : public LAMMPS_NS::Pair {
   struct BoundingSphere {
     double x, y, z, radius;
   };
-  std::vector<double> bodies_;  // per atom, owned + ghost: kBodyValues
+  std::vector<double> bodies_;    // per atom, owned + ghost: kBodyValues
   std::vector<PosedAtom> atoms_;  // owned atoms posed every step, ghosts when a pair first needs them
   std::vector<char> posed_;       // 1 where atoms_ holds this step's pose
   std::vector<BoundingSphere> spheres_;
   Eigen::Vector3d last_semi_axes_ = Eigen::Vector3d::Zero();  // r̂ of the last atom posed, reused for
   double last_mean_radius_ = 0.0;                             // equal semi-axes (one cube root less)
-  std::vector<std::pair<int, int>> candidates_;  // (jj, j) of one atom i whose bounding spheres meet
+  std::vector<std::pair<int, int>> candidates_;               // (jj, j) of one atom i whose bounding spheres meet
   bool keep_contacts_ = false;
   ellc::ContactCache pair_scratch_;  // evaluate_pair's working space, reused by every pair
   bool warned_aspect_ = false;
