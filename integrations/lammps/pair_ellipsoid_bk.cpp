@@ -269,6 +269,8 @@ void PairEllipsoidBK::pose_atom(int index) {
     last_mean_radius_ = posed.body.mean_radius();
   }
   posed.mean_radius = last_mean_radius_;
+  posed.tag = atom->tag[index];
+  posed.type = atom->type[index];
   posed_[static_cast<std::size_t>(index)] = 1;
 }
 
@@ -365,14 +367,16 @@ void PairEllipsoidBK::compute(int eflag, int vflag) {
         history = scratch.data();
       }
       // Canonical orientation: a = lower atom ID.
-      const bool i_is_a = tag[i] < tag[j];
+      const PosedAtom& atom_i = atoms_[static_cast<std::size_t>(i)];
+      const PosedAtom& atom_j = atoms_[static_cast<std::size_t>(j)];
+      const bool i_is_a = atom_i.tag < atom_j.tag;
       const int a = i_is_a ? i : j;
       const int b = i_is_a ? j : i;
       const PosedAtom& atom_a = atoms_[static_cast<std::size_t>(a)];
       const PosedAtom& atom_b = atoms_[static_cast<std::size_t>(b)];
       const PairEvaluation result = evaluate_pair(
           {atom_a.body, atom_a.mean_radius, atom_a.motion}, {atom_b.body, atom_b.mean_radius, atom_b.motion},
-          pair_contexts_[type_index(type[i], type[j])], timestep, history, pair_scratch_);
+          pair_contexts_[type_index(atom_i.type, atom_j.type)], timestep, history, pair_scratch_);
       if (result.geometry_failed && narrow_phase_failures_++ == 0)
         error->warning(FLERR, style_prefix() + "the narrow phase did not converge for atoms " + std::to_string(tag[a]) +
                                   " and " + std::to_string(tag[b]) + " at step " + std::to_string(update->ntimestep) +

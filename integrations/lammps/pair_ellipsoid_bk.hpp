@@ -115,6 +115,8 @@ class PairEllipsoidBK : public LAMMPS_NS::Pair {
     ellc::Ellipsoid body{Eigen::Vector3d::Ones()};
     BodyState motion;
     double mean_radius = 1.0;
+    LAMMPS_NS::tagint tag = 0;  // copies of atom->tag and atom->type: read with the rest, no extra miss
+    int type = 0;
   };
   void pose_atom(int index);
   // The broad test's data, 32 bytes per atom: centre and bounding radius (largest semi-axis).
