@@ -24,6 +24,7 @@ ComputeEllipsoidContacts::~ComputeEllipsoidContacts() { memory->destroy(array_lo
 void ComputeEllipsoidContacts::init() {
   pair_ = dynamic_cast<PairEllipsoidBK*>(force->pair_match(PairEllipsoidBK::kStyle, 1));
   if (pair_ == nullptr) fail(error, FLERR, std::string("compute ") + kStyle + ": requires pair_style ellipsoid/bk");
+  pair_->keep_contacts();
 }
 
 void ComputeEllipsoidContacts::check_current() const {

@@ -8,14 +8,16 @@ PairEvaluation evaluate_pair(const BodyState& a, const BodyState& b, const ellc:
                              double timestep, double* history) {
   const ellc::Ellipsoid body_a(a.semi_axes, {a.position, a.orientation});
   const ellc::Ellipsoid body_b(b.semi_axes, {b.position, b.orientation});
-  return evaluate_pair({body_a, body_a.mean_radius(), a}, {body_b, body_b.mean_radius(), b}, context, timestep,
-                       history);
+  ellc::ContactCache scratch;
+  return evaluate_pair({body_a, body_a.mean_radius(), a}, {body_b, body_b.mean_radius(), b}, context, timestep, history,
+                       scratch);
 }
 
 PairEvaluation evaluate_pair(const AtomBody& a, const AtomBody& b, const ellc::InteractionContext& context,
-                             double timestep, double* history) {
+                             double timestep, double* history, ellc::ContactCache& cache) {
   ellc::ContactHistory record = ellc::ContactHistory::read_from(history);
-  ellc::ContactCache cache;  // constants are rebuilt every step (nothing per contact but the record)
+  // The constants are rebuilt every step (nothing per contact but the record). The ellipsoid path
+  // overwrites cache.constants before use and never reads constants_cached (the sphere path's).
   const BodyState& motion_a = a.motion;
   const BodyState& motion_b = b.motion;
   const ellc::BodyRef ref_a{motion_a.semi_axes, a.ellipsoid.center(), motion_a.orientation, a.mean_radius,

@@ -58,8 +58,11 @@ struct PairEvaluation {
 // When the bodies do not overlap the contact ends (δ_* and the spring are zeroed) and only the
 // narrow phase's separating axis may be kept (keep_warm_start). A failed narrow phase leaves the
 // history as it was, as in the built-in engine.
+// `scratch` holds the contact constants while the result is built; its contents on entry do not
+// matter (a caller evaluating many pairs passes one object, saving its construction per pair).
 [[nodiscard]] PairEvaluation evaluate_pair(const AtomBody& a, const AtomBody& b,
-                                           const ellc::InteractionContext& context, double timestep, double* history);
+                                           const ellc::InteractionContext& context, double timestep, double* history,
+                                           ellc::ContactCache& scratch);
 
 // The same, posing the bodies from their states (tests, one-off evaluations).
 [[nodiscard]] PairEvaluation evaluate_pair(const BodyState& a, const BodyState& b,

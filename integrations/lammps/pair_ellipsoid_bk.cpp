@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <memory>
 
 #include "ellc/engine/rigid_body.hpp"
 #include "ellc/engine/simulation.hpp"
@@ -123,6 +124,13 @@ void PairEllipsoidBK::init_style() {
     fail(error, FLERR, style_prefix() + "fix " + kHistoryFixId + " exists but is not this style's history");
   history_->attach(this);
 
+  // Per-contact records cost time and memory on every step: keep them only for their readers.
+  // compute pair/local (through single()) is found here; compute ellipsoid/bk/contacts asks in its
+  // init(), which LAMMPS runs after this one.
+  keep_contacts_ = false;
+  for (int index = 0; index < modify->ncompute; ++index)
+    if (utils::strmatch(modify->compute[index]->style, "^pair/local")) keep_contacts_ = true;
+
   check_shapes();
 }
 
@@ -228,17 +236,42 @@ void PairEllipsoidBK::unpack_forward_comm(int n, int first, double* buffer) {
             bodies_.begin() + static_cast<std::ptrdiff_t>(first) * kBodyValues);
 }
 
-BodyState PairEllipsoidBK::body_state(int index) const {
+namespace {
+// Asks for the cache lines of [begin, begin + bytes) ahead of their use (a hint; never faults).
+void prefetch(const void* begin, std::size_t bytes) {
+  constexpr std::size_t kLine = 64;
+  const auto* first = static_cast<const char*>(begin);
+  for (std::size_t at = 0; at < bytes; at += kLine) __builtin_prefetch(first + at);
+}
+}  // namespace
+
+// The posed ellipsoid, r̂ and motion of one atom (owned or ghost) for this step.
+void PairEllipsoidBK::pose_atom(int index) {
+  PosedAtom& posed = atoms_[static_cast<std::size_t>(index)];
+  BodyState& motion = posed.motion;
   const double* body = &bodies_[static_cast<std::size_t>(index) * kBodyValues];
   const double* x = atom->x[index];
   const double* v = atom->v[index];
-  BodyState state;
-  state.position = {x[0], x[1], x[2]};
-  state.velocity = {v[0], v[1], v[2]};
-  state.semi_axes = {body[0], body[1], body[2]};
-  state.orientation = Eigen::Quaterniond(body[3], body[4], body[5], body[6]);
-  state.mass = atom->rmass[index];
-  return state;
+  motion.position = {x[0], x[1], x[2]};
+  motion.velocity = {v[0], v[1], v[2]};
+  motion.semi_axes = {body[0], body[1], body[2]};
+  motion.orientation = Eigen::Quaterniond(body[3], body[4], body[5], body[6]);
+  motion.mass = atom->rmass[index];
+  motion.angular_velocity.setZero();
+  if (motion.semi_axes.maxCoeff() > 0.0)
+    motion.angular_velocity = ellc::engine::angular_velocity_from_momentum(
+        {atom->angmom[index][0], atom->angmom[index][1], atom->angmom[index][2]}, motion.orientation,
+        ellc::engine::solid_ellipsoid_inertia(motion.mass, motion.semi_axes));
+  // Built in place (Ellipsoid is trivially destructible): no copy of its 300-odd bytes.
+  std::construct_at(&posed.body, motion.semi_axes, ellc::Pose{motion.position, motion.orientation});
+  if (motion.semi_axes != last_semi_axes_) {
+    last_semi_axes_ = motion.semi_axes;
+    last_mean_radius_ = posed.body.mean_radius();
+  }
+  posed.mean_radius = last_mean_radius_;
+  posed.tag = atom->tag[index];
+  posed.type = atom->type[index];
+  posed_[static_cast<std::size_t>(index)] = 1;
 }
 
 void PairEllipsoidBK::compute(int eflag, int vflag) {
@@ -260,15 +293,16 @@ void PairEllipsoidBK::compute(int eflag, int vflag) {
   // advanced by the last step of the previous run (or are fresh): the history must not move again.
   const bool during_setup = update->setupflag != 0;
   const int history_size = kHistoryDoubles;
-  std::vector<double> scratch;
+  std::array<double, kHistoryDoubles> scratch{};
 
-  // Per atom, owned and ghost, once per step: the posed ellipsoid, r̂ and the motion.
-  shapes_.clear();
-  motions_.resize(static_cast<std::size_t>(nall));
-  mean_radii_.resize(static_cast<std::size_t>(nall));
+  // Per atom, owned and ghost, once per step: the bounding sphere and the size check. Owned atoms
+  // are posed now (the wall fix reads them too); a ghost only when one of its pairs needs it, as
+  // many ghosts of the cutoff shell touch nothing.
+  if (atoms_.size() < static_cast<std::size_t>(nall)) atoms_.resize(static_cast<std::size_t>(nall));
+  posed_.assign(static_cast<std::size_t>(nall), 0);
+  spheres_.resize(static_cast<std::size_t>(nall));
   for (int index = 0; index < nall; ++index) {
     const double* body = &bodies_[static_cast<std::size_t>(index) * kBodyValues];
-    const auto slot = static_cast<std::size_t>(index);
     const double largest = std::max({body[0], body[1], body[2]});
     const double type_radius = type_radius_[static_cast<std::size_t>(type[index])];
     if (largest > type_radius && type_radius > 0.0)
@@ -276,50 +310,73 @@ void PairEllipsoidBK::compute(int eflag, int vflag) {
                style_prefix() + "atom " + std::to_string(tag[index]) +
                    " is larger than any atom of its type was at the start of the run; re-run to update "
                    "the contact cutoffs");
-    BodyState& motion = motions_[slot];
-    motion = body_state(index);
-    if (largest > 0.0)
-      motion.angular_velocity = ellc::engine::angular_velocity_from_momentum(
-          {atom->angmom[index][0], atom->angmom[index][1], atom->angmom[index][2]}, motion.orientation,
-          ellc::engine::solid_ellipsoid_inertia(motion.mass, motion.semi_axes));
-    shapes_.emplace_back(motion.semi_axes, ellc::Pose{motion.position, motion.orientation});
-    mean_radii_[slot] = shapes_.back().mean_radius();
+    spheres_[static_cast<std::size_t>(index)] = {x[index][0], x[index][1], x[index][2], largest};
   }
+  for (int index = 0; index < nlocal; ++index) pose_atom(index);
 
   long touching = 0;
   contacts_.clear();
+  const bool keep_contacts = keep_contacts_;
   const NeighList* neighbors = list;
   for (int ii = 0; ii < neighbors->inum; ++ii) {
     const int i = neighbors->ilist[ii];
     const int* jlist = neighbors->firstneigh[i];
-    const double radius_i = std::max({bodies_[static_cast<std::size_t>(i) * kBodyValues],
-                                      bodies_[static_cast<std::size_t>(i) * kBodyValues + 1],
-                                      bodies_[static_cast<std::size_t>(i) * kBodyValues + 2]});
-    for (int jj = 0; jj < neighbors->numneigh[i]; ++jj) {
+    const int count = neighbors->numneigh[i];
+    const BoundingSphere sphere_i = spheres_[static_cast<std::size_t>(i)];
+
+    // Broad test on the bounding spheres. The pairs that pass have their data fetched now, so it
+    // arrives while the test runs on and the pairs before them are solved (a pair's atom and
+    // history are otherwise cache misses: the time of a memory access is that of much arithmetic).
+    // Two atoms ahead: its neighbor list; one atom ahead: the bounding spheres that list names
+    // (fetched one round earlier), so the broad test below finds them in cache.
+    if (ii + 2 < neighbors->inum) prefetch(neighbors->firstneigh[neighbors->ilist[ii + 2]], 64);
+    if (ii + 1 < neighbors->inum) {
+      const int next = neighbors->ilist[ii + 1];
+      const int* next_list = neighbors->firstneigh[next];
+      for (int jj = 0; jj < std::min(neighbors->numneigh[next], 16); ++jj)
+        __builtin_prefetch(&spheres_[static_cast<std::size_t>(next_list[jj] & NEIGHMASK)]);
+    }
+    candidates_.clear();
+    constexpr int kAhead = 4;
+    for (int jj = 0; jj < count; ++jj) {
+      if (jj + kAhead < count) __builtin_prefetch(&spheres_[static_cast<std::size_t>(jlist[jj + kAhead] & NEIGHMASK)]);
       const int j = jlist[jj] & NEIGHMASK;
-      double* history = history_->slot_values(i, jj);
-      if (during_setup) {  // evaluate on a copy: the stored history is already that of this step
-        scratch.assign(history, history + history_size);
-        history = scratch.data();
-      }
-      const double* body_j = &bodies_[static_cast<std::size_t>(j) * kBodyValues];
-      const double reach = radius_i + std::max({body_j[0], body_j[1], body_j[2]});
-      const double dx = x[i][0] - x[j][0], dy = x[i][1] - x[j][1], dz = x[i][2] - x[j][2];
+      const BoundingSphere& sphere_j = spheres_[static_cast<std::size_t>(j)];
+      const double reach = sphere_i.radius + sphere_j.radius;
+      const double dx = sphere_i.x - sphere_j.x, dy = sphere_i.y - sphere_j.y, dz = sphere_i.z - sphere_j.z;
       if (dx * dx + dy * dy + dz * dz >= reach * reach) {  // bounding spheres apart
         if (!during_setup && history_->slot_active(i, jj)) {
+          double* history = history_->slot_values(i, jj);
           std::fill(history, history + kHistoryDoubles, 0.0);
           history_->set_slot_active(i, jj, false);
         }
         continue;
       }
+      if (posed_[static_cast<std::size_t>(j)] == 0) pose_atom(j);
+      prefetch(&atoms_[static_cast<std::size_t>(j)], sizeof(PosedAtom));
+      prefetch(history_->slot_values(i, jj), kHistoryDoubles * sizeof(double));
+      prefetch(f[j], 3 * sizeof(double));
+      prefetch(torque[j], 3 * sizeof(double));
+      candidates_.emplace_back(jj, j);
+    }
+
+    for (const auto& [jj, j] : candidates_) {
+      double* history = history_->slot_values(i, jj);
+      if (during_setup) {  // evaluate on a copy: the stored history is already that of this step
+        std::copy(history, history + history_size, scratch.begin());
+        history = scratch.data();
+      }
       // Canonical orientation: a = lower atom ID.
-      const bool i_is_a = tag[i] < tag[j];
+      const PosedAtom& atom_i = atoms_[static_cast<std::size_t>(i)];
+      const PosedAtom& atom_j = atoms_[static_cast<std::size_t>(j)];
+      const bool i_is_a = atom_i.tag < atom_j.tag;
       const int a = i_is_a ? i : j;
       const int b = i_is_a ? j : i;
-      const auto sa = static_cast<std::size_t>(a), sb = static_cast<std::size_t>(b);
-      const PairEvaluation result =
-          evaluate_pair({shapes_[sa], mean_radii_[sa], motions_[sa]}, {shapes_[sb], mean_radii_[sb], motions_[sb]},
-                        pair_contexts_[type_index(type[i], type[j])], timestep, history);
+      const PosedAtom& atom_a = atoms_[static_cast<std::size_t>(a)];
+      const PosedAtom& atom_b = atoms_[static_cast<std::size_t>(b)];
+      const PairEvaluation result = evaluate_pair(
+          {atom_a.body, atom_a.mean_radius, atom_a.motion}, {atom_b.body, atom_b.mean_radius, atom_b.motion},
+          pair_contexts_[type_index(atom_i.type, atom_j.type)], timestep, history, pair_scratch_);
       if (result.geometry_failed && narrow_phase_failures_++ == 0)
         error->warning(FLERR, style_prefix() + "the narrow phase did not converge for atoms " + std::to_string(tag[a]) +
                                   " and " + std::to_string(tag[b]) + " at step " + std::to_string(update->ntimestep) +
@@ -329,20 +386,22 @@ void PairEllipsoidBK::compute(int eflag, int vflag) {
       ++touching;
 
       const Eigen::Vector3d force_on_i = i_is_a ? Eigen::Vector3d(-result.force_on_b) : result.force_on_b;
-      ContactRecord& record = contacts_.emplace_back();
-      record.i = i;
-      record.j = j;
-      record.overlap = result.overlap;
-      record.max_overlap = result.law.max_overlap;
-      record.regime = static_cast<int>(result.law.regime);
-      ellc::ContactConstants size;  // the one constant c_c/r̂ needs, into the engine's definition
-      size.contact_radius_sq_per_overlap = result.contact_radius_sq_per_overlap;
-      record.size_ratio =
-          ellc::engine::contact_size_ratio(size, result.law.max_overlap, std::min(mean_radii_[sa], mean_radii_[sb]));
-      record.normal_force = result.normal_force;
-      record.tangential_force = (result.force_on_b - result.normal_force * result.normal).norm();
-      record.force_on_i = force_on_i;
-      record.point = result.point;
+      if (keep_contacts) {
+        ContactRecord& record = contacts_.emplace_back();
+        record.i = i;
+        record.j = j;
+        record.overlap = result.overlap;
+        record.max_overlap = result.law.max_overlap;
+        record.regime = static_cast<int>(result.law.regime);
+        ellc::ContactConstants size;  // the one constant c_c/r̂ needs, into the engine's definition
+        size.contact_radius_sq_per_overlap = result.contact_radius_sq_per_overlap;
+        record.size_ratio = ellc::engine::contact_size_ratio(size, result.law.max_overlap,
+                                                             std::min(atom_a.mean_radius, atom_b.mean_radius));
+        record.normal_force = result.normal_force;
+        record.tangential_force = (result.force_on_b - result.normal_force * result.normal).norm();
+        record.force_on_i = force_on_i;
+        record.point = result.point;
+      }
       const Eigen::Vector3d& torque_on_i = i_is_a ? result.torque_on_a : result.torque_on_b;
       const Eigen::Vector3d& torque_on_j = i_is_a ? result.torque_on_b : result.torque_on_a;
       for (int k = 0; k < 3; ++k) {
@@ -355,9 +414,11 @@ void PairEllipsoidBK::compute(int eflag, int vflag) {
           torque[j][k] += torque_on_j[k];
         }
       }
-      if (evflag)
+      if (evflag) {
+        const double dx = x[i][0] - x[j][0], dy = x[i][1] - x[j][1], dz = x[i][2] - x[j][2];
         ev_tally_xyz(i, j, nlocal, newton ? 1 : 0, 0.0, 0.0, force_on_i.x(), force_on_i.y(), force_on_i.z(), dx, dy,
                      dz);
+      }
     }
   }
   touching_pairs_ = touching;
@@ -445,8 +506,9 @@ void PairEllipsoidBK::read_restart(FILE* file) {
 }
 
 double PairEllipsoidBK::memory_usage() {
-  return static_cast<double>(bodies_.capacity() * sizeof(double) + shapes_.capacity() * sizeof(ellc::Ellipsoid) +
-                             motions_.capacity() * sizeof(BodyState) + mean_radii_.capacity() * sizeof(double));
+  return static_cast<double>(bodies_.capacity() * sizeof(double) + atoms_.capacity() * sizeof(PosedAtom) +
+                             spheres_.capacity() * sizeof(BoundingSphere) +
+                             contacts_.capacity() * sizeof(ContactRecord));
 }
 
 }  // namespace ellc_lammps

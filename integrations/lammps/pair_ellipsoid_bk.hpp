@@ -13,6 +13,7 @@
 #include <cstdio>
 #include <string>
 #include <unordered_map>
+#include <utility>
 #include <vector>
 
 #include "ellc/geometry/ellipsoid.hpp"
@@ -73,16 +74,22 @@ class PairEllipsoidBK : public LAMMPS_NS::Pair {
   // For fix wall/ellipsoid/bk: the bodies this step's compute() posed, owned and ghost atoms,
   // valid from compute() until the atoms move (computed_at() is that step).
   [[nodiscard]] LAMMPS_NS::bigint computed_at() const { return computed_at_; }
-  [[nodiscard]] const ellc::Ellipsoid& posed_body(int index) const { return shapes_[static_cast<std::size_t>(index)]; }
-  [[nodiscard]] double mean_radius(int index) const { return mean_radii_[static_cast<std::size_t>(index)]; }
-  [[nodiscard]] const BodyState& motion(int index) const { return motions_[static_cast<std::size_t>(index)]; }
+  [[nodiscard]] const ellc::Ellipsoid& posed_body(int index) const {
+    return atoms_[static_cast<std::size_t>(index)].body;
+  }
+  [[nodiscard]] double mean_radius(int index) const { return atoms_[static_cast<std::size_t>(index)].mean_radius; }
+  [[nodiscard]] const BodyState& motion(int index) const { return atoms_[static_cast<std::size_t>(index)].motion; }
   // pair_coeff I I as given (the material of type I), or null when that line is missing.
   [[nodiscard]] const TypeCoefficients* type_coefficients(int type) const {
     return given_[type_index(type, type)] ? &type_coefficients_[type_index(type, type)] : nullptr;
   }
   [[nodiscard]] ellc::HertzMode hertz_mode() const { return hertz_mode_; }
-  // The touching pairs of the last compute() on this rank (computed_at()).
+  // The touching pairs of the last compute() on this rank (computed_at()). Kept only when a reader
+  // exists: compute pair/local (found by init_style) or a reader that asked (keep_contacts()).
   [[nodiscard]] const std::vector<ContactRecord>& contacts() const { return contacts_; }
+  // Asks compute() to keep contacts() from the next force evaluation on (until the next init_style;
+  // compute ellipsoid/bk/contacts calls it from its init(), which runs after the pair's).
+  void keep_contacts() { keep_contacts_ = true; }
 
  private:
   static constexpr int kBodyValues = 7;
@@ -94,7 +101,6 @@ class PairEllipsoidBK : public LAMMPS_NS::Pair {
   }
   void gather_bodies(bool to_ghosts);
   void check_shapes();
-  [[nodiscard]] BodyState body_state(int index) const;
 
   ellc::HertzMode hertz_mode_ = ellc::HertzMode::hale;
   std::vector<char> given_;                              // 1 where pair_coeff I J was given, (ntypes+1)²
@@ -103,10 +109,29 @@ class PairEllipsoidBK : public LAMMPS_NS::Pair {
   std::vector<double> type_radius_;                      // largest semi-axis of any atom of the type
   FixContactHistory* history_ = nullptr;
   LAMMPS_NS::Compute* bodies_compute_ = nullptr;
-  std::vector<double> bodies_;           // per atom, owned + ghost: kBodyValues
-  std::vector<ellc::Ellipsoid> shapes_;  // per atom, owned + ghost, rebuilt every step
-  std::vector<BodyState> motions_;       // velocity, angular velocity, mass (same indexing)
-  std::vector<double> mean_radii_;       // r̂ = (abc)^{1/3}
+  // Everything one atom contributes to its pairs, in one place so that a pair touches few cache
+  // lines: the posed ellipsoid, its motion and r̂ = (abc)^{1/3}. Owned + ghost, rebuilt every step.
+  struct PosedAtom {
+    ellc::Ellipsoid body{Eigen::Vector3d::Ones()};
+    BodyState motion;
+    double mean_radius = 1.0;
+    LAMMPS_NS::tagint tag = 0;  // copies of atom->tag and atom->type: read with the rest, no extra miss
+    int type = 0;
+  };
+  void pose_atom(int index);
+  // The broad test's data, 32 bytes per atom: centre and bounding radius (largest semi-axis).
+  struct BoundingSphere {
+    double x, y, z, radius;
+  };
+  std::vector<double> bodies_;    // per atom, owned + ghost: kBodyValues
+  std::vector<PosedAtom> atoms_;  // owned atoms posed every step, ghosts when a pair first needs them
+  std::vector<char> posed_;       // 1 where atoms_ holds this step's pose
+  std::vector<BoundingSphere> spheres_;
+  Eigen::Vector3d last_semi_axes_ = Eigen::Vector3d::Zero();  // r̂ of the last atom posed, reused for
+  double last_mean_radius_ = 0.0;                             // equal semi-axes (one cube root less)
+  std::vector<std::pair<int, int>> candidates_;               // (jj, j) of one atom i whose bounding spheres meet
+  bool keep_contacts_ = false;
+  ellc::ContactCache pair_scratch_;  // evaluate_pair's working space, reused by every pair
   bool warned_aspect_ = false;
   long narrow_phase_failures_ = 0;
   long touching_pairs_ = 0;

@@ -155,6 +155,14 @@ def check_contacts(args):
         pairs = read_dump(os.path.join(work, "pairs.dump"))
         contacts = read_dump(os.path.join(work, "contacts.dump"))
         atoms = {int(row[0]): row[1:4] for row in read_dump(os.path.join(work, "atoms.dump"))}
+        # The same run with compute pair/local as the only reader of the per-contact records.
+        run([*launcher, args.lmp, "-in", args.input, "-log", "none", "-var", "steps", args.steps,
+             "-var", "dir", work, "-var", "readers", "pair_local"], work)
+        pairs_alone = read_dump(os.path.join(work, "pairs.dump"))
+    if pairs_alone != pairs:
+        sys.exit("compute pair/local without compute ellipsoid/bk/contacts differs from the run with both "
+                 f"({sum(row[3] > 0.0 for row in pairs_alone)} touching pairs against "
+                 f"{sum(row[3] > 0.0 for row in pairs)})")
     names, rows = thermo_rows(output)
     last = rows[max(rows)]
     virial_pressure, volume = last[1], last[2]
