@@ -89,28 +89,20 @@ void run_geometry(const GeometryOptions& options) {
   for (const auto& warning : poses.warnings) std::fprintf(stderr, "ellc: warning: %s\n", warning.c_str());
   const TwoBodyFields fields = poses_fields(poses, options.poses_path);
 
-  const Ellipsoid body_i(poses.body_i.spec.semi_axes, poses.body_i.pose);
-  NarrowPhaseResult result;
-  ContactMaterial material;
-  double mean_radius_sum = 0.0;
-  if (poses.body_j) {
-    const Ellipsoid body_j(poses.body_j->spec.semi_axes, poses.body_j->pose);
-    result = ellipsoid_contact(body_i, body_j);
-    material = mix(poses.body_i.spec.material, poses.body_j->spec.material);
-    mean_radius_sum = body_i.mean_radius() + body_j.mean_radius();
-  } else {
-    result = wall_contact(body_i, poses.wall->plane);
-    material = mix(poses.body_i.spec.material, poses.wall->material.value_or(poses.body_i.spec.material));
-    mean_radius_sum = wall_mean_radius_sum(body_i);
-    // Wholly behind the wall: no contact of the law's kind (and δ without bound).
-    if (result.status == NarrowPhaseStatus::contact && result.geometry.overlap > 2.0 * body_i.bounding_radius())
-      throw InputError(options.poses_path, "body_I.position = " + format_vector(poses.body_i.pose.position) +
-                                               " with wall.point = " + format_vector(poses.wall->plane.point) +
-                                               " puts the body wholly behind the wall (overlap " +
-                                               format_number(result.geometry.overlap) +
-                                               " µm): expected at most twice its largest semi-axis, " +
-                                               format_number(2.0 * body_i.bounding_radius()) + " µm");
-  }
+  const PosesContact found = find_contact(poses);
+  const Ellipsoid& body_i = found.body_i;
+  const NarrowPhaseResult& result = found.result;
+  const ContactMaterial& material = found.material;
+  const double mean_radius_sum = found.mean_radius_sum;
+  // Wholly behind the wall: no contact of the law's kind (and δ without bound).
+  if (!poses.body_j && result.status == NarrowPhaseStatus::contact &&
+      result.geometry.overlap > 2.0 * body_i.bounding_radius())
+    throw InputError(options.poses_path, "body_I.position = " + format_vector(poses.body_i.pose.position) +
+                                             " with wall.point = " + format_vector(poses.wall->plane.point) +
+                                             " puts the body wholly behind the wall (overlap " +
+                                             format_number(result.geometry.overlap) +
+                                             " µm): expected at most twice its largest semi-axis, " +
+                                             format_number(2.0 * body_i.bounding_radius()) + " µm");
 
   const ContactGeometry& g = result.geometry;
   if (result.status != NarrowPhaseStatus::failed && !finite_geometry(g))

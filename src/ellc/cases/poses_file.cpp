@@ -115,4 +115,19 @@ PosesCase parse_poses(std::string_view toml_text, const std::string& source) {
   return read_poses_table(parse_toml_text(toml_text, source), source);
 }
 
+PosesContact find_contact(const PosesCase& poses) {
+  PosesContact found{Ellipsoid(poses.body_i.spec.semi_axes, poses.body_i.pose), {}, {}, 0.0};
+  if (poses.body_j) {
+    const Ellipsoid body_j(poses.body_j->spec.semi_axes, poses.body_j->pose);
+    found.result = ellipsoid_contact(found.body_i, body_j);
+    found.material = mix(poses.body_i.spec.material, poses.body_j->spec.material);
+    found.mean_radius_sum = found.body_i.mean_radius() + body_j.mean_radius();
+  } else {
+    found.result = wall_contact(found.body_i, poses.wall->plane);
+    found.material = mix(poses.body_i.spec.material, poses.wall->material.value_or(poses.body_i.spec.material));
+    found.mean_radius_sum = wall_mean_radius_sum(found.body_i);
+  }
+  return found;
+}
+
 }  // namespace ellc

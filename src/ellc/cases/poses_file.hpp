@@ -16,6 +16,7 @@
 
 #include "ellc/cases/case_file.hpp"
 #include "ellc/geometry/ellipsoid.hpp"
+#include "ellc/geometry/narrow_phase.hpp"
 #include "ellc/geometry/wall_contact.hpp"
 #include "ellc/material/material.hpp"
 
@@ -44,5 +45,17 @@ struct PosesCase {
 // Reads and validates a poses file; throws InputError on the first problem.
 [[nodiscard]] PosesCase read_poses(const std::string& path);
 [[nodiscard]] PosesCase parse_poses(std::string_view toml_text, const std::string& source);
+
+// What the law needs from a poses case: the narrow phase's answer for the pair (or the body and
+// the wall), the mixed material, and the sum of mean radii that scales r̂ (a wall counts as
+// the body's mirror image, wall_mean_radius_sum). `ellc geometry` and the poses fuzz target
+// share it.
+struct PosesContact {
+  Ellipsoid body_i;
+  NarrowPhaseResult result;
+  ContactMaterial material;
+  double mean_radius_sum = 0.0;
+};
+[[nodiscard]] PosesContact find_contact(const PosesCase& poses);
 
 }  // namespace ellc
