@@ -3,6 +3,10 @@
 //
 //  * BM_Law / BM_Hertz: force only, from prebuilt contact constants (a DEM with fixed contact
 //    geometry, or LAMMPS with constants cached per pair).
+//  * BM_LawOnKeptCurveVsHertz: the same with the unloading curve of δ_* kept with the contact
+//    (evaluate_contact_on_curve), as a caller with fixed constants does (evaluate_along_path, a
+//    pair with prebuilt constants): derived once per unloading episode, not per call. The curves
+//    are prebuilt untimed, like the constants.
 //  * BM_LawWithConstants / BM_HertzWithShape: the DEM path where curvatures move every step, so
 //    the constants are rebuilt from (κ, α) before each force.
 // The ratio counter of the Law benchmarks is against the matching Hertz baseline, measured in
@@ -27,6 +31,7 @@ struct Batch {
   std::vector<double> alpha;
   std::vector<std::uint32_t> geometry;  // per contact
   std::vector<double> overlap, max_overlap;
+  std::vector<UnloadingCurve> unloading;  // per contact, unloading_curve(constants, max_overlap)
   std::vector<double> mean_radius_sum;
 };
 
@@ -64,6 +69,7 @@ const Batch& batch() {
       result.geometry.push_back(g);
       result.overlap.push_back(overlap);
       result.max_overlap.push_back(max_overlap);
+      result.unloading.push_back(max_overlap > c.yield_overlap ? unloading_curve(c, max_overlap) : UnloadingCurve{});
     }
     return result;
   }();
@@ -111,6 +117,20 @@ void BM_LawVsHertz(benchmark::State& state) {
       });
 }
 
+// Force only, constants and the unloading curve of each contact's δ_* prebuilt.
+void BM_LawOnKeptCurveVsHertz(benchmark::State& state) {
+  compare(
+      state,
+      [](const Batch& b, std::size_t i) {
+        const ContactConstants& c = b.constants[b.geometry[i]];
+        return c.hertz_coefficient * b.overlap[i] * std::sqrt(b.overlap[i]);  // eq. (10)
+      },
+      [](const Batch& b, std::size_t i) {
+        return evaluate_contact_on_curve(b.constants[b.geometry[i]], b.overlap[i], b.max_overlap[i], b.unloading[i])
+            .force;
+      });
+}
+
 // Constants rebuilt from curvatures before every force, as in a DEM step.
 void BM_LawWithConstantsVsHertzWithShape(benchmark::State& state) {
   compare(
@@ -130,5 +150,6 @@ void BM_LawWithConstantsVsHertzWithShape(benchmark::State& state) {
 }
 
 BENCHMARK(BM_LawVsHertz)->UseManualTime()->Unit(benchmark::kMillisecond)->MinTime(2.0);
+BENCHMARK(BM_LawOnKeptCurveVsHertz)->UseManualTime()->Unit(benchmark::kMillisecond)->MinTime(2.0);
 BENCHMARK(BM_LawWithConstantsVsHertzWithShape)->UseManualTime()->Unit(benchmark::kMillisecond)->MinTime(2.0);
 }  // namespace

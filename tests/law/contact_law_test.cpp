@@ -198,6 +198,45 @@ TEST(Law, RandomHistoriesNeverGiveNaNOrNegativeForce) {
   }
 }
 
+// The unloading curve kept by the caller (evaluate_contact_on_curve) or by a cache over a walk
+// (evaluate_contact_cached, evaluate_along_path) must give exactly the bits of evaluate_contact:
+// random walks load, unload, separate and reload past δ_* many times, so a cache that missed a
+// change of δ_* would return the previous episode's curve.
+TEST(Law, KeptAndCachedUnloadingCurvesGiveTheSameBits) {
+  std::mt19937_64 rng(11);
+  std::uniform_real_distribution<double> aspect(0.3, 3.0), radius(0.5, 20.0), factor(-1.0, 14.0);
+  int unloading_steps = 0, episodes = 0;
+  for (int trial = 0; trial < 300; ++trial) {
+    const auto c = ellc::testing::tip_constants(ellc::testing::from_aspect(aspect(rng), aspect(rng), radius(rng)),
+                                                ellc::testing::from_aspect(aspect(rng), aspect(rng), radius(rng)), 0.0,
+                                                0.0, trial % 2 ? HertzMode::exact : HertzMode::hale);
+    std::vector<double> path(40);
+    for (double& overlap : path) overlap = factor(rng) * c.yield_overlap;
+    std::vector<LawResult> along(path.size());
+    evaluate_along_path(c, path, along);
+    UnloadingCurveCache cache;
+    double max_overlap = 0.0, last_curve_max = -1.0;
+    for (std::size_t step = 0; step < path.size(); ++step) {
+      const LawResult plain = evaluate_contact(c, path[step], max_overlap);
+      const LawResult cached = evaluate_contact_cached(c, path[step], max_overlap, cache);
+      const LawResult kept = evaluate_contact_on_curve(c, path[step], max_overlap, unloading_curve(c, max_overlap));
+      for (const LawResult& other : {cached, kept, along[step]}) {
+        ASSERT_EQ(other.force, plain.force) << trial << " " << step;
+        ASSERT_EQ(other.max_overlap, plain.max_overlap);
+        ASSERT_EQ(other.regime, plain.regime);
+      }
+      if (plain.regime == Regime::unloading) {
+        ++unloading_steps;
+        if (max_overlap != last_curve_max) ++episodes;
+        last_curve_max = max_overlap;
+      }
+      max_overlap = plain.max_overlap;
+    }
+  }
+  EXPECT_GT(unloading_steps, 2000);  // the walks do exercise the cache
+  EXPECT_GT(episodes, 500);          // with many different δ_* per walk
+}
+
 TEST(Law, SeparatedAtZeroOrNegativeOverlapKeepsHistoryForTheCaller) {
   const auto c = paper_case2();
   const LawResult result = evaluate_contact(c, -0.1, 1.0);

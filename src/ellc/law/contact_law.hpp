@@ -10,6 +10,7 @@
 
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <numbers>
 
 #include "ellc/law/contact_constants.hpp"
@@ -106,21 +107,76 @@ struct LoadingPoint {
   return max_overlap > c.yield_overlap ? unloading_branch(c, max_overlap).plastic_overlap : 0.0;
 }
 
-// The law. `max_overlap` is δ_* before this step (0 for a fresh contact). The caller stores the
-// returned max_overlap; deleting history on separation is the caller's policy (docs/model.md §5).
-[[nodiscard]] inline LawResult evaluate_contact(const ContactConstants& c, double overlap,
-                                                double max_overlap) noexcept {
+// All the law needs below a history δ_* > δ_Y: F = coefficient (δ − δ_p)^{3/2}, eq. (49) with δ_p
+// of eq. (34). A function of the constants and δ_* only: a caller whose constants stay fixed while
+// δ_* does (a path, a pair with prebuilt constants) derives it once per δ_* and passes it in,
+// which saves the derivation's λ(δ_*) (a pow), three square roots and four divisions per call.
+struct UnloadingCurve {
+  double plastic_overlap = 0.0;  // δ_p
+  double coefficient = 0.0;      // C_UL
+};
+
+[[nodiscard]] inline UnloadingCurve unloading_curve(const ContactConstants& c, double max_overlap) noexcept {
+  const UnloadingBranch branch = unloading_branch(c, max_overlap);
+  return {branch.plastic_overlap, branch.unloading_coefficient};
+}
+
+namespace law_detail {
+// The law, with the unloading curve of δ_* from `curve_of()`, called only when unloading from
+// δ_* > δ_Y. Every evaluate_contact* below is this one function: the same bits either way.
+template <class CurveOf>
+[[nodiscard]] inline LawResult evaluate_contact_given(const ContactConstants& c, double overlap, double max_overlap,
+                                                      CurveOf&& curve_of) noexcept {
   if (!(overlap > 0.0)) return {0.0, max_overlap, Regime::separated};
   if (overlap >= max_overlap) {
     const LoadingPoint point = loading_force(c, overlap);
     return {point.force, overlap, point.regime};
   }
   if (max_overlap <= c.yield_overlap)  // never yielded: Hertz both ways, δ_p = 0
-    return {c.hertz_coefficient * law_detail::pow_three_halves(overlap), max_overlap, Regime::elastic};
-  const UnloadingBranch branch = unloading_branch(c, max_overlap);
-  const double elastic_overlap = overlap - branch.plastic_overlap;  // δ_UL, eq. (32)
+    return {c.hertz_coefficient * pow_three_halves(overlap), max_overlap, Regime::elastic};
+  const UnloadingCurve curve = curve_of();
+  const double elastic_overlap = overlap - curve.plastic_overlap;  // δ_UL, eq. (32)
   if (elastic_overlap <= 0.0) return {0.0, max_overlap, Regime::separated};
-  return {branch.unloading_coefficient * law_detail::pow_three_halves(elastic_overlap), max_overlap, Regime::unloading};
+  return {curve.coefficient * pow_three_halves(elastic_overlap), max_overlap, Regime::unloading};
+}
+}  // namespace law_detail
+
+// The law. `max_overlap` is δ_* before this step (0 for a fresh contact). The caller stores the
+// returned max_overlap; deleting history on separation is the caller's policy (docs/model.md §5).
+[[nodiscard]] inline LawResult evaluate_contact(const ContactConstants& c, double overlap,
+                                                double max_overlap) noexcept {
+  return law_detail::evaluate_contact_given(c, overlap, max_overlap, [&] { return unloading_curve(c, max_overlap); });
+}
+
+// The law with the unloading curve kept by the caller (the same bits as evaluate_contact):
+// `curve` must be unloading_curve(c, max_overlap) whenever max_overlap > δ_Y (not read otherwise).
+[[nodiscard]] inline LawResult evaluate_contact_on_curve(const ContactConstants& c, double overlap, double max_overlap,
+                                                         const UnloadingCurve& curve) noexcept {
+  return law_detail::evaluate_contact_given(c, overlap, max_overlap, [&] { return curve; });
+}
+
+// The unloading curve of the last δ_* asked for, for one set of constants: derived again only when
+// δ_* changes, i.e. once per unloading episode instead of once per step.
+class UnloadingCurveCache {
+ public:
+  [[nodiscard]] const UnloadingCurve& curve(const ContactConstants& c, double max_overlap) noexcept {
+    if (!(max_overlap == max_overlap_)) {  // also true on the first call (NaN)
+      curve_ = unloading_curve(c, max_overlap);
+      max_overlap_ = max_overlap;
+    }
+    return curve_;
+  }
+
+ private:
+  double max_overlap_ = std::numeric_limits<double>::quiet_NaN();
+  UnloadingCurve curve_;
+};
+
+// The law with the curve from `cache` (which must belong to these constants): the same bits as
+// evaluate_contact(c, overlap, max_overlap).
+[[nodiscard]] inline LawResult evaluate_contact_cached(const ContactConstants& c, double overlap, double max_overlap,
+                                                       UnloadingCurveCache& cache) noexcept {
+  return law_detail::evaluate_contact_given(c, overlap, max_overlap, [&] { return cache.curve(c, max_overlap); });
 }
 
 // The elastic curve F = coefficient · x^{3/2} the contact is on, x = δ − offset: Hertz (eq. 10)

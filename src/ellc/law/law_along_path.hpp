@@ -13,9 +13,10 @@ namespace ellc {
 inline double evaluate_along_path(const ContactConstants& constants, std::span<const double> overlaps,
                                   std::span<LawResult> results, double initial_max_overlap = 0.0) noexcept {
   double max_overlap = initial_max_overlap;
+  UnloadingCurveCache unloading;  // the constants are fixed: one derivation per unloading episode
   const std::size_t count = overlaps.size() < results.size() ? overlaps.size() : results.size();
   for (std::size_t index = 0; index < count; ++index) {
-    results[index] = evaluate_contact(constants, overlaps[index], max_overlap);
+    results[index] = evaluate_contact_cached(constants, overlaps[index], max_overlap, unloading);
     max_overlap = results[index].max_overlap;
   }
   return max_overlap;
