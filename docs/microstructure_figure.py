@@ -25,7 +25,6 @@ Usage (from the repository root):
 
 import argparse
 import csv
-import os
 import pathlib
 import subprocess
 import sys
@@ -68,7 +67,7 @@ def converged_bracket(rows):
     if len(points) < 3:
         return None
     slopes = [(t2 - t1) / (h2 - h1) for (h1, t1), (h2, t2) in zip(points, points[1:])]
-    (h1, t1), (h2, t2) = points[0], points[1]
+    (h1, t1), (h2, _) = points[0], points[1]
     extrapolated = t1 - slopes[0] * h1
     monotone_convex = all(s > 0 for s in slopes) and all(a <= b for a, b in zip(slopes, slopes[1:]))
     if not monotone_convex:
