@@ -55,6 +55,10 @@ def write_table(table, example, rows):
             bracket = converged_bracket([row for row in rows if row["state"] == state])
             if bracket:
                 handle.write(f"# {state}: {bracket[2]}\n")
+            fit = power_law_extrapolation([row for row in rows if row["state"] == state])
+            if fit:
+                handle.write(f"# {state}: tau_z = tau_0 + C h^p through the three finest sizes: p = {fit[1]:.2f}, "
+                             f"tau_0 = {fit[0]:.3f} (an estimate, not a bound)\n")
 
 
 def converged_bracket(rows):
@@ -76,6 +80,33 @@ def converged_bracket(rows):
             f"{h1:g} um, the converged value lies between {extrapolated:.3f} (the line through {h2:g} and {h1:g} um "
             f"extrapolated to 0) and {t1:.3f} (at {h1:g} um): the finest value is at most "
             f"{100 * (t1 / extrapolated - 1):.0f} % high")
+
+
+def power_law_extrapolation(rows):
+    """(tau_0, p) of tau_z = tau_0 + C h^p through the three finest sizes, or None.
+
+    An estimate of the converged value, not a bound: it assumes the three finest sizes already
+    follow one power of h."""
+    points = sorted((float(r["voxel_size_um"]), float(r["tortuosity_z"])) for r in rows)[:3]
+    if len(points) < 3:
+        return None
+    (h1, t1), (h2, t2), (h3, t3) = points
+    if not (t1 < t2 < t3):
+        return None
+    target = (t3 - t2) / (t2 - t1)
+
+    def ratio(p):
+        return (h3 ** p - h2 ** p) / (h2 ** p - h1 ** p)
+
+    low, high = 0.05, 10.0  # ratio(p) grows with p
+    if not ratio(low) < target < ratio(high):
+        return None
+    for _ in range(200):
+        middle = 0.5 * (low + high)
+        low, high = (middle, high) if ratio(middle) < target else (low, middle)
+    p = 0.5 * (low + high)
+    c = (t2 - t1) / (h2 ** p - h1 ** p)
+    return t1 - c * h1 ** p, p
 
 
 def main():
@@ -122,6 +153,9 @@ def main():
         bracket = converged_bracket([row for row in rows if row["state"] == state])
         if bracket:
             print(f"{state}: {bracket[2]}")
+        fit = power_law_extrapolation([row for row in rows if row["state"] == state])
+        if fit:
+            print(f"{state}: tau_z = tau_0 + C h^p through the three finest sizes: p = {fit[1]:.2f}, tau_0 = {fit[0]:.3f}")
 
     import matplotlib
     matplotlib.use("Agg")
@@ -143,6 +177,11 @@ def main():
             porosity = float(min(chosen, key=lambda r: float(r["voxel_size_um"]))["porosity_voxels"])
             axes.plot([porosity, porosity], bracket[:2], "-", color=plt.get_cmap("tab10")(index), lw=3, alpha=0.35,
                       label=f"{state}: bracket of the converged value")
+        fit = power_law_extrapolation(chosen)
+        if fit:
+            porosity = float(min(chosen, key=lambda r: float(r["voxel_size_um"]))["porosity_voxels"])
+            axes.plot(porosity, fit[0], "*", color=plt.get_cmap("tab10")(index), ms=9,
+                      label=f"{state}: tau_0 + C h^p extrapolated, p = {fit[1]:.2f}")
     axes.legend(fontsize=7)
     image = ROOT / f"docs/img/microstructure_tortuosity_porosity_{args.example}.png"
     figure.savefig(image)
