@@ -9,7 +9,8 @@ at several voxel sizes (through-plane tortuosity only), and writes
 
 The voxel sizes run from coarse to fine, both states at each size, and the table is rewritten
 after each analysis, so an interrupted call leaves the sizes it finished; a second call reuses
-every finished analysis folder (OUT/convergence/STATE_SIZE/analysis.txt).
+every finished analysis folder (OUT/convergence/STATE_SIZE/analysis.txt); with --finished-only
+(and --skip-run) it runs nothing and draws what is finished.
 
 Usage (from the repository root):
 
@@ -114,6 +115,8 @@ def main():
     parser.add_argument("--cli", default=str(ROOT / "build/apps/ellc"))
     parser.add_argument("--out", default=str(ROOT / "out/microstructure"))
     parser.add_argument("--skip-run", action="store_true", help="reuse OUT/run from an earlier call")
+    parser.add_argument("--finished-only", action="store_true",
+                        help="run no analysis: table and figure from the finished folders of an earlier call")
     parser.add_argument("--spacings", default=",".join(str(s) for s in SPACINGS))
     parser.add_argument("--example", default="calendering", help="calendering or calendering_quick (examples/NAME.toml)")
     args = parser.parse_args()
@@ -133,6 +136,9 @@ def main():
             packing = run_directory / f"analysis_{state}" / "packing.csv"
             folder = out / "convergence" / f"{state}_{spacing:g}"
             if not (folder / "analysis.txt").exists():
+                if args.finished_only:
+                    print(f"not finished, left out: {folder}")
+                    continue
                 run([args.cli, "analyse", packing, "--spacing", spacing, "--axes", "z", "--coarse-factor", "1",
                      "--no-plot", "-o", folder])
             summary = microstructure.read_summary(folder)
