@@ -80,6 +80,7 @@ struct AnalyseOptions {
   std::string scenario_path;
   double voxels_per_semi_axis = 5.0;
   double spacing = 0.0;
+  bool spacing_given = false;  // --spacing 0 is refused, not read as "unset"
   double memory_limit_gib = 4.0;
   double coarse_factor = 2.0;
   std::string axes = "xyz";
@@ -113,7 +114,7 @@ void run_analyse(const AnalyseOptions& options) {
   microstructure::AnalysisOptions analysis;
   if (!(options.voxels_per_semi_axis > 0.0))
     throw InputError("", "--voxels-per-semi-axis", format_number(options.voxels_per_semi_axis), "a number > 0");
-  if (options.spacing < 0.0 || !std::isfinite(options.spacing))
+  if (options.spacing_given && !(std::isfinite(options.spacing) && options.spacing > 0.0))
     throw InputError("", "--spacing", format_number(options.spacing), "a voxel size > 0 (µm)");
   if (!(options.memory_limit_gib > 0.0))
     throw InputError("", "--memory-limit-gib", format_number(options.memory_limit_gib), "a number of GiB > 0");
@@ -143,14 +144,18 @@ const RegisterCommand registration([](CLI::App& root) {
                       "The scenario that wrote the checkpoint (default: the one summary.txt beside it names)");
   command->add_option("--voxels-per-semi-axis", options->voxels_per_semi_axis,
                       "Resolution: voxels per smallest semi-axis (default 5)");
-  command->add_option("--spacing", options->spacing, "Resolution: voxel size in µm (overrides the above)");
+  CLI::Option* spacing =
+      command->add_option("--spacing", options->spacing, "Resolution: voxel size in µm (overrides the above)");
   command->add_option("--memory-limit-gib", options->memory_limit_gib,
                       "Refuse grids whose analysis needs more (default 4 GiB)");
   command->add_option("--coarse-factor", options->coarse_factor,
                       "The resolution check: tortuosity again at this x the voxel size (default 2; 1: none)");
   command->add_option("--axes", options->axes, "Tortuosity directions, some of x, y, z (default xyz)");
   command->add_flag("--no-plot", options->no_plot, "Skip the PNGs (no Python needed)");
-  command->callback([options] { run_analyse(*options); });
+  command->callback([options, spacing] {
+    options->spacing_given = spacing->count() > 0;
+    run_analyse(*options);
+  });
 });
 
 }  // namespace

@@ -9,6 +9,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <map>
 #include <sstream>
 
@@ -68,12 +69,49 @@ TEST(AnalyseCli, BadInputIsRefusedByName) {
   run = run_cli("analyse " + good.string() + " --no-plot --spacing -1");
   EXPECT_EQ(run.exit_code, 2) << run.output;
   EXPECT_NE(run.output.find("--spacing"), std::string::npos) << run.output;
+  // A resolution of zero is refused too: --spacing 0 is not read as "no spacing given".
+  run = run_cli("analyse " + good.string() + " --no-plot --spacing 0");
+  EXPECT_EQ(run.exit_code, 2) << run.output;
+  EXPECT_NE(run.output.find("--spacing"), std::string::npos) << run.output;
+  run = run_cli("analyse " + good.string() + " --no-plot --voxels-per-semi-axis 0");
+  EXPECT_EQ(run.exit_code, 2) << run.output;
+  EXPECT_NE(run.output.find("--voxels-per-semi-axis"), std::string::npos) << run.output;
+  // Over the memory limit: refused with the grid and its estimate (10^4 voxels per side of the
+  // 10 µm box, 10^12 voxels at 59 bytes each).
   run = run_cli("analyse " + good.string() + " --no-plot --spacing 0.001");
   EXPECT_EQ(run.exit_code, 2) << run.output;
-  EXPECT_NE(run.output.find("GiB"), std::string::npos) << run.output;
+  EXPECT_NE(run.output.find("1e+04 x 1e+04 x 1e+04 = 1e+12 voxels, about 5.49e+04 GiB"), std::string::npos)
+      << run.output;
+  EXPECT_NE(run.output.find("memory limit of 4 GiB"), std::string::npos) << run.output;
   run = run_cli("analyse " + scratch("no_checkpoint.bin").string() + " --no-plot");
   EXPECT_EQ(run.exit_code, 2) << run.output;
   EXPECT_NE(run.output.find("--scenario"), std::string::npos) << run.output;
+}
+
+TEST(AnalyseCli, NonPercolatingDirectionReportsInfinityWithTheReason) {
+  // An oblate spheroid (semi-axes 9, 9, 2) in a 10 x 10 x 20 µm box periodic in x and y: its
+  // section at z = 10 (radius 9) covers the whole periodic cell (corner distance 7.07), so no pore
+  // path crosses z, while the pore above and below it still connects the x and y faces.
+  const fs::path packing = scratch("closed_layer.csv");
+  std::ofstream(packing) << "# box_lower = 0 0 0\n# box_upper = 10 10 20\n# periodic = true true false\n"
+                         << "x,y,z,a,b,c,qw,qx,qy,qz\n5,5,10,9,9,2,1,0,0,0\n";
+  const fs::path out = scratch("closed_layer_out");
+  const CliRun run = run_cli("analyse " + packing.string() + " --spacing 0.5 --no-plot -o " + out.string());
+  ASSERT_EQ(run.exit_code, 0) << run.output;  // not a solver failure
+  const auto keys = read_keys(out / "analysis.txt");
+  EXPECT_EQ(keys.at("tortuosity_z"), "inf");
+  EXPECT_EQ(keys.at("tortuosity_z_coarse"), "inf");
+  EXPECT_NE(keys.at("tortuosity_z_note").find("no pore path connects the faces z = min and z = max"),
+            std::string::npos);
+  for (const char* key : {"tortuosity_x", "tortuosity_y"}) {
+    EXPECT_FALSE(keys.contains(std::string(key) + "_note")) << key;
+    EXPECT_GT(std::stod(keys.at(key)), 1.0) << key;
+    EXPECT_LT(std::stod(keys.at(key)), 10.0) << key;
+  }
+  std::ifstream csv(out / "tortuosity.csv");
+  std::string text((std::istreambuf_iterator<char>(csv)), std::istreambuf_iterator<char>());
+  EXPECT_NE(text.find(",inf,0,0,"), std::string::npos) << text;  // tau, iterations, not converged
+  EXPECT_NE(text.find("\"no pore path connects the faces z = min and z = max"), std::string::npos) << text;
 }
 
 TEST(AnalyseCli, CalenderingRunAnalysesItsStatesAndTheCheckpointAgrees) {
