@@ -259,27 +259,45 @@ void write_input(const std::string& path, const std::string& data_name, const sc
                           : "the plate lifts until it loses contact (pressure below release_fraction of the hold's)")
       << "\nvariable     phase string unload\n"
       << drag_fix(0.0) << "variable     ts equal $(time:%.17g)\nvariable     zs equal $(v_plate_position:%.17g)\n";
+  const std::string unload_steps = budget(0.3 * travel / c.lift_speed);
   if (c.servo_release) {
     // The engine's release servo, lift_speed · clamp(g (p − p_r)/p_held, −1, 1) upwards, is the
-    // wall fix's servo at p_r with the gain g · p_r/p_held = g · release_pressure_fraction.
+    // wall fix's servo at p_r with the gain g · p_r/p_held = g · release_pressure_fraction. The
+    // engine caps it by the lift's ramp: the plate follows the ramp until the servo asks for less.
     out << "variable     held_pressure equal $(v_plate_pressure:%.17g)\n"
         << "if           \"${held_pressure} <= 0\" then &\n"
         << "  \"print 'ERROR: ellc export-lammps: calendering.release = servo needs a pressure to unload from: the "
            "top plate carried ${held_pressure} MPa at the end of the hold'\" \"quit 1\"\n"
         << "variable     release_pressure equal " << number(c.release_pressure_fraction) << "*v_held_pressure\n"
-        << "fix_modify   wall servo hi $(" << number(kPerMilli) << "*v_release_pressure:%.17g) " << number(c.lift_speed)
-        << " servo_gain " << number(c.servo_gain * c.release_pressure_fraction) << " servo_tolerance "
-        << number(c.release_tolerance) << '\n'
         << "variable     released equal v_plate_pressure<=" << number(1.0 + c.release_tolerance)
         << "*v_release_pressure\n";
+    if (c.ramp_time > 0.0) {
+      const std::string s = "(((time-v_ts)<" + number(c.ramp_time) +
+                            ")*(time-v_ts)+((time-v_ts)>=" + number(c.ramp_time) + ")*" + number(c.ramp_time) + ")";
+      if (c.servo_hold && c.target_pressure) out << "fix_modify   wall servo off\n";
+      out << "variable     ztop equal " << ramp_expression(0.0, c.lift_speed, c.ramp_time) << '\n'
+          << "variable     ramp_speed equal " << number(0.5 * c.lift_speed) << "*(1-cos(PI*" << s << "/"
+          << number(c.ramp_time) << "))\n"
+          << "variable     servo_below_ramp equal " << number(c.lift_speed * c.servo_gain)
+          << "*(v_plate_pressure-v_release_pressure)/v_held_pressure<v_ramp_speed\n"
+          << "variable     servo_takes_over equal v_released||v_servo_below_ramp\n"
+          << "fix          halt all halt 1 v_servo_takes_over > 0.5 error continue\n"
+          << "run          " << steps(c.ramp_time) << "\nunfix        halt\n";
+    }
+    out << "fix_modify   wall servo hi $(" << number(kPerMilli) << "*v_release_pressure:%.17g) " << number(c.lift_speed)
+        << " servo_gain " << number(c.servo_gain * c.release_pressure_fraction) << " servo_tolerance "
+        << number(c.release_tolerance) << '\n'
+        << "if           \"${released} < 0.5\" then &\n"
+        << "  \"fix          halt all halt 1 v_released > 0.5 error continue\" &\n"
+        << "  \"run          " << unload_steps << "\" \"unfix        halt\"\n";
   } else {
     out << "variable     released equal v_plate_pressure<=" << number(c.release_fraction)
         << "*$(v_plate_pressure:%.17g)\n";
     if (c.servo_hold && c.target_pressure) out << "fix_modify   wall servo off\n";
-    out << "variable     ztop equal " << ramp_expression(0.0, c.lift_speed, c.ramp_time) << '\n';
+    out << "variable     ztop equal " << ramp_expression(0.0, c.lift_speed, c.ramp_time) << '\n'
+        << "fix          halt all halt 1 v_released > 0.5 error continue\n"
+        << "run          " << unload_steps << "\nunfix        halt\n";
   }
-  out << "fix          halt all halt 1 v_released > 0.5 error continue\n"
-      << "run          " << budget(0.3 * travel / c.lift_speed) << "\nunfix        halt\n";
   if (relax) {
     const double relax_limit = c.max_relax_time > 0.0 ? c.max_relax_time
                                : c.servo_release      ? 5.0 * std::max(c.relax_time, c.hold_time)
