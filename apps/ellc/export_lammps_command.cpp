@@ -4,8 +4,9 @@
 // with the same material, contact sub-models, walls (fix wall/ellipsoid/bk) and loading protocol,
 // for `lmp_ellc -in in.scenario` (run in DIR). The LAMMPS run writes DIR/timeseries.csv with the
 // built-in engine's column names for the quantities both compute. docs/lammps.md lists what the
-// script cannot express (the equilibrium criteria of the hold; drag is LAMMPS's fix langevin at
-// zero temperature, which is the engine's −γ m v).
+// script cannot express. The hold and relax stages end on the engine's equilibrium criterion
+// (the unbalanced-force ratio, fix wall/ellipsoid/bk's element 9); drag is LAMMPS's fix langevin
+// at zero temperature, which is the engine's −γ m v.
 //
 // Units: the scenario's µm, µs, ng, µN, MPa become LAMMPS `units micro` (µm, µs, pg, nN, kPa):
 // masses, forces and pressures × 10³.
@@ -161,10 +162,12 @@ void write_input(const std::string& path, const std::string& data_name, const sc
       << "variable     bottom_pressure equal -f_wall[3]/" << number(area * kPerMilli) << '\n'
       << "variable     porosity equal 1-" << number(solid) << "/(" << number(area) << "*v_thickness)\n"
       << "variable     coordination_number equal 2*c_contacts/count(all)\n"
+      << "variable     unbalanced_force_ratio equal f_wall[9]\n"
       << "fix          series all print " << every
       << " \"${step},${time},${phase},${plate_position},${thickness},${plate_pressure},${bottom_pressure},"
-         "${porosity},${coordination_number}\" file timeseries.csv screen no title "
-         "\"step,time,phase,plate_position,thickness,plate_pressure,bottom_pressure,porosity,coordination_number\"\n"
+         "${porosity},${coordination_number},${unbalanced_force_ratio}\" file timeseries.csv screen no title "
+         "\"step,time,phase,plate_position,thickness,plate_pressure,bottom_pressure,porosity,coordination_number,"
+         "unbalanced_force_ratio\"\n"
       << "variable     step equal step\nvariable     time equal time\n"
       << "thermo_style custom step time v_plate_position v_plate_pressure v_porosity v_coordination_number\n"
       << "thermo       " << every * 50 << "\n\n";
@@ -216,8 +219,24 @@ void write_input(const std::string& path, const std::string& data_name, const sc
       << "fix          halt all halt 1 v_loaded > 0.5 error continue\n"
       << "run          " << budget(travel / c.speed) << "\nunfix        halt\n\n";
 
-  out << "# hold: " << (c.servo_hold ? "the servo holds the target pressure" : "the plate stops") << " for hold_time,"
-      << " with rest_drag_rate\nvariable     phase string hold\n"
+  // The engine's equilibrium criterion (LoadingProtocol::after_step): at least the stage's time,
+  // then until the unbalanced-force ratio (f_wall[9], the engine's definition) is below
+  // equilibrium_ratio, checked every step; out of time (the engine's limit), the run stops with
+  // the engine's message.
+  const std::string ratio = number(c.equilibrium_ratio);
+  const auto out_of_time = [&](const std::string& ended, const std::string& start, const std::string& what,
+                               const std::string& limit, const std::string& advice) {
+    out << "if           \"${" << ended << "} < 0.5\" then &\n  \"print 'ERROR: ellc export-lammps: " << what
+        << " did not reach equilibrium: after $(time-v_" << start << ":%.6g) us (calendering." << limit
+        << ") the unbalanced-force ratio is $(v_unbalanced_force_ratio:%.6g)'\" &\n"
+        << "  \"print '  above calendering.equilibrium_ratio = " << ratio << advice << "'\" \"quit 1\"\n";
+  };
+  const auto steps = [&](double time) { return std::to_string(static_cast<long long>(std::ceil(time / dt))); };
+
+  const double hold_limit = c.max_hold_time > 0.0 ? c.max_hold_time : 5.0 * c.hold_time;
+  out << "# hold: " << (c.servo_hold ? "the servo holds the target pressure" : "the plate stops")
+      << " with rest_drag_rate, at least hold_time, then until\n# the unbalanced-force ratio is below "
+         "equilibrium_ratio (max_hold_time)\nvariable     phase string hold\n"
       << drag_fix(c.rest_drag_rate)
       << "variable     ts equal $(time:%.17g)\nvariable     zs equal $(v_plate_position:%.17g)\n";
   if (c.servo_hold && c.target_pressure)
@@ -225,23 +244,88 @@ void write_input(const std::string& path, const std::string& data_name, const sc
         << " servo_gain " << number(c.servo_gain) << " servo_tolerance " << number(c.servo_tolerance) << '\n';
   else
     out << "variable     ztop equal " << ramp_expression(-c.speed, 0.0, c.ramp_time) << '\n';
-  out << "run          " << static_cast<long long>(std::ceil(c.hold_time / dt)) << "\n\n";
+  out << "variable     hold_start equal $(time:%.17g)\n"
+      << "variable     held equal (time>=v_hold_start+" << number(c.hold_time) << ")&&(v_unbalanced_force_ratio<"
+      << ratio << ")\nfix          halt all halt 1 v_held > 0.5 error continue\n"
+      << "run          " << steps(hold_limit) << "\nunfix        halt\n";
+  out_of_time("held", "hold_start", "the loaded state", "max_hold_time",
+              "; hold longer, damp more, or load more slowly");
+  out << "print        \"ellc: hold ended after $(time-v_hold_start:%.17g) us, unbalanced-force ratio "
+         "$(v_unbalanced_force_ratio:%.17g)\"\n\n";
 
-  out << "# unload: the plate lifts until it loses contact (pressure below release_fraction of the hold's)\n"
-      << "variable     phase string unload\n"
-      << drag_fix(0.0) << "variable     released equal v_plate_pressure<=" << number(c.release_fraction)
-      << "*$(v_plate_pressure:%.17g)\n"
-      << "variable     ts equal $(time:%.17g)\nvariable     zs equal $(v_plate_position:%.17g)\n";
-  if (c.servo_hold && c.target_pressure) out << "fix_modify   wall servo off\n";
-  out << "variable     ztop equal " << ramp_expression(0.0, c.lift_speed, c.ramp_time) << '\n'
-      << "fix          halt all halt 1 v_released > 0.5 error continue\n"
-      << "run          " << budget(0.3 * travel / c.lift_speed) << "\nunfix        halt\n";
-  if (c.relax_time > 0.0)
-    out << "\n# relax: plate at rest, rest_drag_rate, relax_time\nvariable     phase string relax\n"
-        << drag_fix(c.rest_drag_rate) << "variable     ts equal $(time:%.17g)\n"
-        << "variable     zs equal $(v_plate_position:%.17g)\nvariable     ztop equal "
-        << ramp_expression(c.lift_speed, 0.0, c.ramp_time) << "\nrun          "
-        << static_cast<long long>(std::ceil(c.relax_time / dt)) << '\n';
+  const bool relax = c.servo_release || c.relax_time > 0.0;
+  out << "# unload: "
+      << (c.servo_release ? "the servo lowers the plate pressure to p_r = release_pressure_fraction x the held pressure"
+                          : "the plate lifts until it loses contact (pressure below release_fraction of the hold's)")
+      << "\nvariable     phase string unload\n"
+      << drag_fix(0.0) << "variable     ts equal $(time:%.17g)\nvariable     zs equal $(v_plate_position:%.17g)\n";
+  const std::string unload_steps = budget(0.3 * travel / c.lift_speed);
+  if (c.servo_release) {
+    // The engine's release servo, lift_speed · clamp(g (p − p_r)/p_held, −1, 1) upwards, is the
+    // wall fix's servo at p_r with the gain g · p_r/p_held = g · release_pressure_fraction. The
+    // engine caps it by the lift's ramp: the plate follows the ramp until the servo asks for less.
+    out << "variable     held_pressure equal $(v_plate_pressure:%.17g)\n"
+        << "if           \"${held_pressure} <= 0\" then &\n"
+        << "  \"print 'ERROR: ellc export-lammps: calendering.release = servo needs a pressure to unload from: the "
+           "top plate carried ${held_pressure} MPa at the end of the hold'\" \"quit 1\"\n"
+        << "variable     release_pressure equal " << number(c.release_pressure_fraction) << "*v_held_pressure\n"
+        << "variable     released equal v_plate_pressure<=" << number(1.0 + c.release_tolerance)
+        << "*v_release_pressure\n";
+    if (c.ramp_time > 0.0) {
+      const std::string s = "(((time-v_ts)<" + number(c.ramp_time) +
+                            ")*(time-v_ts)+((time-v_ts)>=" + number(c.ramp_time) + ")*" + number(c.ramp_time) + ")";
+      if (c.servo_hold && c.target_pressure) out << "fix_modify   wall servo off\n";
+      out << "variable     ztop equal " << ramp_expression(0.0, c.lift_speed, c.ramp_time) << '\n'
+          << "variable     ramp_speed equal " << number(0.5 * c.lift_speed) << "*(1-cos(PI*" << s << "/"
+          << number(c.ramp_time) << "))\n"
+          << "variable     servo_below_ramp equal " << number(c.lift_speed * c.servo_gain)
+          << "*(v_plate_pressure-v_release_pressure)/v_held_pressure<v_ramp_speed\n"
+          << "variable     servo_takes_over equal v_released||v_servo_below_ramp\n"
+          << "fix          halt all halt 1 v_servo_takes_over > 0.5 error continue\n"
+          << "run          " << steps(c.ramp_time) << "\nunfix        halt\n";
+    }
+    out << "fix_modify   wall servo hi $(" << number(kPerMilli) << "*v_release_pressure:%.17g) " << number(c.lift_speed)
+        << " servo_gain " << number(c.servo_gain * c.release_pressure_fraction) << " servo_tolerance "
+        << number(c.release_tolerance) << '\n'
+        << "if           \"${released} < 0.5\" then &\n"
+        << "  \"fix          halt all halt 1 v_released > 0.5 error continue\" &\n"
+        << "  \"run          " << unload_steps << "\" \"unfix        halt\"\n";
+  } else {
+    out << "variable     released equal v_plate_pressure<=" << number(c.release_fraction)
+        << "*$(v_plate_pressure:%.17g)\n";
+    if (c.servo_hold && c.target_pressure) out << "fix_modify   wall servo off\n";
+    out << "variable     ztop equal " << ramp_expression(0.0, c.lift_speed, c.ramp_time) << '\n'
+        << "fix          halt all halt 1 v_released > 0.5 error continue\n"
+        << "run          " << unload_steps << "\nunfix        halt\n";
+  }
+  if (relax) {
+    const double relax_limit = c.max_relax_time > 0.0 ? c.max_relax_time
+                               : c.servo_release      ? 5.0 * std::max(c.relax_time, c.hold_time)
+                                                      : 5.0 * c.relax_time;
+    out << "\n# relax: " << (c.servo_release ? "the servo holds p_r" : "plate at rest")
+        << ", rest_drag_rate, at least relax_time, then until the unbalanced-force ratio\n# is below "
+           "equilibrium_ratio"
+        << (c.servo_release ? " and the plate pressure within release_tolerance of p_r" : "")
+        << " (max_relax_time)\nvariable     phase string relax\n"
+        << drag_fix(c.rest_drag_rate) << "variable     relax_start equal $(time:%.17g)\n";
+    if (!c.servo_release)
+      out << "variable     ts equal $(time:%.17g)\nvariable     zs equal $(v_plate_position:%.17g)\n"
+          << "variable     ztop equal " << ramp_expression(c.lift_speed, 0.0, c.ramp_time) << '\n';
+    out << "variable     relaxed equal (time>=v_relax_start+" << number(c.relax_time) << ")&&(v_unbalanced_force_ratio<"
+        << ratio << ")";
+    if (c.servo_release)
+      out << "&&(abs(v_plate_pressure-v_release_pressure)<=" << number(c.release_tolerance) << "*v_release_pressure)";
+    out << "\nfix          halt all halt 1 v_relaxed > 0.5 error continue\n"
+        << "run          " << steps(relax_limit) << "\nunfix        halt\n";
+    out_of_time("relaxed", "relax_start",
+                c.servo_release ? "the released state (the ratio, and the plate pressure within "
+                                  "calendering.release_tolerance of p_r = $(v_release_pressure:%.6g) MPa)"
+                                : "the released state",
+                "max_relax_time", "");
+    out << "print        \"ellc: relax ended after $(time-v_relax_start:%.17g) us, unbalanced-force ratio "
+           "$(v_unbalanced_force_ratio:%.17g)\"\n";
+    if (c.servo_release) out << "fix_modify   wall servo off\n";
+  }
   out << "variable     phase string done\nrun          0\n";
 }
 

@@ -11,6 +11,7 @@
 #include "ellc/contact/contact_history.hpp"
 #include "ellc/contact/contact_parameters.hpp"
 #include "ellc/contact/pair_contact.hpp"
+#include "ellc/engine/equilibrium.hpp"
 #include "pair_coefficients.hpp"
 #include "pair_ellipsoid_bk.hpp"
 
@@ -105,10 +106,10 @@ FixWallEllipsoidBK::FixWallEllipsoidBK(LAMMPS* instance, int narg, char** arg) :
     fail(error, FLERR, prefix() + "servo_gain and servo_tolerance need the servo keyword");
 
   vector_flag = 1;
-  size_vector = 8;
+  size_vector = 9;
   global_freq = 1;
   extvector = -1;
-  extlist_owned_ = new int[8]{1, 1, 1, 1, 1, 1, 0, 0};  // forces are extensive, positions not
+  extlist_owned_ = new int[9]{1, 1, 1, 1, 1, 1, 0, 0, 0};  // forces are extensive, positions and the ratio not
   extlist = extlist_owned_;
   restart_global = 1;
   restart_peratom = 1;
@@ -208,6 +209,12 @@ void FixWallEllipsoidBK::init() {
     if (!input->variable->equalstyle(p.variable_index))
       fail(error, FLERR, prefix() + "zplane: variable '" + p.variable + "' is not equal-style");
   }
+
+  // Element 9 reads f in post_force: only the pair's forces may be in it before this fix's.
+  earlier_force_fix_.clear();
+  for (int index = 0; index < modify->nfix && modify->fix[index] != this; ++index)
+    if ((modify->fmask[index] & POST_FORCE) != 0 && earlier_force_fix_.empty())
+      earlier_force_fix_ = modify->fix[index]->id;
 
   // The wall contact of each type: its pair_coeff I I model, overridden by this fix's keywords.
   const int ntypes = atom->ntypes;
@@ -326,6 +333,7 @@ void FixWallEllipsoidBK::setup(int /*vflag*/) {
   move_planes(true);
   check_between_planes();
   wall_contacts(true);
+  tally_balance();
   reduce_forces();
   update_servo();
 }
@@ -335,6 +343,7 @@ void FixWallEllipsoidBK::post_force(int /*vflag*/) {
     fail_one(error, FLERR, prefix() + "pair ellipsoid/bk did not compute this step (internal error)");
   move_planes(false);
   wall_contacts(false);
+  tally_balance();
   if (servo_plane_ >= 0) {
     reduce_forces();
     update_servo();
@@ -346,6 +355,8 @@ void FixWallEllipsoidBK::post_force(int /*vflag*/) {
 void FixWallEllipsoidBK::wall_contacts(bool during_setup) {
   force_local_.fill(0.0);
   force_reduced_ = false;
+  balance_local_.fill(0.0);
+  balance_reduced_ = false;
   double** f = atom->f;
   double** torque = atom->torque;
   const int* mask = atom->mask;
@@ -382,6 +393,7 @@ void FixWallEllipsoidBK::wall_contacts(bool during_setup) {
         if (!during_setup) ellc::ContactHistory{}.write_to(stored);  // the contact ends (docs/model.md §5)
         continue;
       }
+      balance_local_[3] += 1.0;                              // a contact, with or without force
       if (solution.law.regime != ellc::Regime::separated) {  // below δ_p: overlapping, no force
         const ellc::WallForces forces =
             ellc::wall_forces(solution, motion.position, {motion.velocity, motion.angular_velocity, motion.mass},
@@ -391,10 +403,46 @@ void FixWallEllipsoidBK::wall_contacts(bool during_setup) {
           torque[i][k] -= forces.lever_cross_force[k];
           force_local_[static_cast<std::size_t>(3 * w + k)] += forces.contact.on_j[k];
         }
+        balance_local_[2] += forces.contact.on_j.norm();
       }
       if (!during_setup) record.write_to(stored);
     }
   }
+}
+
+// The atoms' net contact forces (pair + wall: no other fix has added to f yet, see init()) and
+// the pair contacts, each once over all ranks (as compute ellipsoid/bk/contacts counts them).
+void FixWallEllipsoidBK::tally_balance() {
+  double** f = atom->f;
+  for (int i = 0; i < atom->nlocal; ++i) {
+    if (!(atom->mask[i] & groupbit)) continue;
+    balance_local_[0] += std::sqrt(f[i][0] * f[i][0] + f[i][1] * f[i][1] + f[i][2] * f[i][2]);
+    balance_local_[1] += 1.0;
+  }
+  if (!pair_->keeps_contacts()) return;
+  for (const ContactRecord& c : pair_->contacts()) {
+    if (force->newton_pair == 0 && c.j >= atom->nlocal && atom->tag[c.i] > atom->tag[c.j]) continue;
+    balance_local_[2] += c.force_on_i.norm();
+    balance_local_[3] += 1.0;
+  }
+}
+
+double FixWallEllipsoidBK::unbalanced_force_ratio() {
+  if (!earlier_force_fix_.empty())
+    fail(error, FLERR,
+         prefix() + "vector element 9 (the unbalanced-force ratio) needs this fix defined before fix " +
+             earlier_force_fix_ + ", which adds forces first (define the wall fix before gravity and drag)");
+  if (!pair_->keeps_contacts())
+    fail(error, FLERR,
+         prefix() +
+             "vector element 9 (the unbalanced-force ratio) needs the pair's contact forces: define "
+             "compute ID all ellipsoid/bk/contacts");
+  if (!balance_reduced_) {
+    MPI_Allreduce(balance_local_.data(), balance_all_.data(), 4, MPI_DOUBLE, MPI_SUM, world);
+    balance_reduced_ = true;
+  }
+  return ellc::engine::unbalanced_force_ratio(balance_all_[0], static_cast<std::size_t>(balance_all_[1]),
+                                              balance_all_[2], static_cast<std::size_t>(balance_all_[3]));
 }
 
 void FixWallEllipsoidBK::reduce_forces() {
@@ -419,6 +467,7 @@ void FixWallEllipsoidBK::update_servo() {
 }
 
 double FixWallEllipsoidBK::compute_vector(int index) {
+  if (index == 8) return unbalanced_force_ratio();
   if (index >= 6) {
     const Plane& p = planes_[static_cast<std::size_t>(index - 6)];
     return p.kind == PlaneKind::none ? 0.0 : p.position;

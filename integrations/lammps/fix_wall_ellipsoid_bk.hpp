@@ -22,10 +22,14 @@
 //              engine's servo); servo_gain g (default 5), servo_tolerance t (default 0: within
 //              t·P of the target the plane stands still)
 //
-// Global vector of 8: the force the particles exert on the lower plane (fx fy fz), on the upper
-// plane (fx fy fz), then the planes' positions zlo zhi. Per atom and plane, the contact history
-// record (contact_history.hpp) travels with the atom and into restart files; redefine the fix with
-// the same ID after read_restart to pick it up (the servo's position and speed come back too).
+// Global vector of 9: the force the particles exert on the lower plane (fx fy fz), on the upper
+// plane (fx fy fz), then the planes' positions zlo zhi, then the built-in engine's unbalanced-force
+// ratio (ellc/engine/equilibrium.hpp: mean |net contact force| of the group's atoms over the mean
+// |contact force| of the pair and wall contacts). Element 9 reads each atom's force right after
+// this fix has added the wall forces, so it needs this fix before every other fix that adds forces
+// (gravity, drag), and the pair's contact records (compute ellipsoid/bk/contacts defined). Per atom and plane, the
+// contact history record (contact_history.hpp) travels with the atom and into restart files; redefine the fix with the
+// same ID after read_restart to pick it up (the servo's position and speed come back too).
 
 #include <array>
 #include <cstdio>
@@ -94,6 +98,8 @@ class FixWallEllipsoidBK : public LAMMPS_NS::Fix {
   void wall_contacts(bool during_setup);
   void update_servo();
   void reduce_forces();
+  void tally_balance();  // the sums of the unbalanced-force ratio, after the wall forces are added
+  [[nodiscard]] double unbalanced_force_ratio();
   [[nodiscard]] double plane_pressure(int plane) const;  // on the plane, from the reduced force
   [[nodiscard]] double* history(int index, int plane) {
     return history_.data() + (static_cast<std::size_t>(index) * kPlanes + static_cast<std::size_t>(plane)) * kRecord;
@@ -119,6 +125,11 @@ class FixWallEllipsoidBK : public LAMMPS_NS::Fix {
   std::array<double, 6> force_local_{};
   std::array<double, 6> force_all_{};
   bool force_reduced_ = false;
+  // Σ |net contact force|, atoms, Σ |contact force|, contacts: this rank's, and over all ranks.
+  std::array<double, 4> balance_local_{};
+  std::array<double, 4> balance_all_{};
+  bool balance_reduced_ = false;
+  std::string earlier_force_fix_;  // a fix that adds forces before this one (element 9 unusable)
   long failures_ = 0;
   int* extlist_owned_ = nullptr;
 };

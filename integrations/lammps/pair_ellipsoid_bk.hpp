@@ -90,6 +90,7 @@ class PairEllipsoidBK : public LAMMPS_NS::Pair {
   // Asks compute() to keep contacts() from the next force evaluation on (until the next init_style;
   // compute ellipsoid/bk/contacts calls it from its init(), which runs after the pair's).
   void keep_contacts() { keep_contacts_ = true; }
+  [[nodiscard]] bool keeps_contacts() const { return keep_contacts_; }
 
  private:
   static constexpr int kBodyValues = 7;

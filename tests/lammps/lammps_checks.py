@@ -18,6 +18,7 @@ import csv
 import math
 import os
 import random
+import re
 import subprocess
 import sys
 import tempfile
@@ -298,7 +299,7 @@ def check_wall(args):
 
 
 ENGINE_COLUMNS = ["step", "time", "phase", "plate_position", "thickness", "plate_pressure", "bottom_pressure",
-                  "porosity", "coordination_number"]
+                  "porosity", "coordination_number", "unbalanced_force_ratio"]
 
 
 def read_series(path):
@@ -331,10 +332,115 @@ def packing_value(text, key):
     sys.exit(f"no [packing] {key} in the scenario")
 
 
-def run_lammps(args, directory, np):
+def run_lammps(args, directory, np, output=None):
     launcher = [args.mpirun, *[flag for flag in args.mpirun_flag if flag], "-np", str(np)] if np > 1 else []
-    run([*launcher, args.lmp, "-in", "in.scenario", "-log", "none"], directory)
+    screen = run([*launcher, args.lmp, "-in", "in.scenario", "-log", "none"], directory)
+    if output is not None:
+        output.append(screen)
     return read_series(os.path.join(directory, "timeseries.csv"))
+
+
+def scenario_value(text, table, key):
+    inside = False
+    for line in text.splitlines():
+        if line.strip().startswith("["):
+            inside = line.strip() == f"[{table}]"
+        elif inside and line.split("=")[0].strip() == key:
+            return line.split("=", 1)[1].split("#")[0].strip()
+    return None
+
+
+def with_calendering(text, **keys):
+    """The scenario text with these [calendering] keys set (replaced or added)."""
+    out, inside = [], False
+    for line in text.splitlines():
+        if line.strip().startswith("["):
+            if inside:
+                out.extend(f"{key} = {value}" for key, value in keys.items())
+            inside = line.strip() == "[calendering]"
+        elif inside and line.split("=")[0].strip() in keys:
+            continue
+        out.append(line)
+    if inside:
+        out.extend(f"{key} = {value}" for key, value in keys.items())
+    return "\n".join(out) + "\n"
+
+
+STAGE_END = re.compile(r"^ellc: (hold|relax) ended after (\S+) us, unbalanced-force ratio (\S+)$", re.M)
+
+
+def check_equilibrium_ends(args, text, work):
+    """The exported hold and relax end like the built-in engine's: past their minimum time, on the
+    unbalanced-force ratio (below equilibrium_ratio), or stop with the engine's error at their limit;
+    release = "servo" unloads to p_r and holds it."""
+    hold_time = float(scenario_value(text, "calendering", "hold_time"))
+    threshold = float(scenario_value(text, "calendering", "equilibrium_ratio"))
+    # 1. The hold ends on the criterion: after hold_time, at the first step below the threshold
+    #    (one the tiny bed reaches only some µs after hold_time).
+    strict = 0.4 * threshold
+    output = []
+    directory = os.path.join(work, "criterion")
+    path = os.path.join(work, "criterion.toml")
+    with open(path, "w") as handle:
+        handle.write(with_calendering(text, equilibrium_ratio=strict, max_hold_time=10 * hold_time))
+    run([args.ellc, "export-lammps", path, "-o", directory], work)
+    series = run_lammps(args, directory, 1, output)
+    ends = STAGE_END.findall(output[0])
+    if [stage for stage, _, _ in ends] != ["hold"]:
+        sys.exit(f"expected one 'ellc: hold ended' line, got {ends}")
+    held, ratio = float(ends[0][1]), float(ends[0][2])
+    if not (held >= hold_time and ratio < strict):
+        sys.exit(f"the hold ended after {held} µs at the ratio {ratio}: expected >= {hold_time} µs and < {strict}")
+    hold = [row for row in series if row["phase"] == "hold"]
+    late = [row for row in hold if float(row["time"]) - float(hold[0]["time"]) >= hold_time + 1e-9]
+    if any(float(row["unbalanced_force_ratio"]) < strict for row in late[:-1]):
+        sys.exit("the hold went on past a row below equilibrium_ratio after hold_time")
+    print(f"hold: ended after {held:.4g} µs (hold_time {hold_time}) at the ratio {ratio:.3g} < {strict}; "
+          f"{len(late)} rows past hold_time, all above it")
+    # 2. A threshold it cannot reach: the hold runs to max_hold_time and stops with the engine's error.
+    directory = os.path.join(work, "limit")
+    path = os.path.join(work, "limit.toml")
+    with open(path, "w") as handle:
+        handle.write(with_calendering(text, equilibrium_ratio="1e-12", max_hold_time=1.5 * hold_time))
+    run([args.ellc, "export-lammps", path, "-o", directory], work)
+    result = subprocess.run([args.lmp, "-in", "in.scenario", "-log", "none"], cwd=directory, stdout=subprocess.PIPE,
+                            stderr=subprocess.STDOUT, text=True)
+    expected = "ERROR: ellc export-lammps: the loaded state did not reach equilibrium: after "
+    if result.returncode == 0 or expected not in result.stdout:
+        sys.exit(f"an unreachable equilibrium_ratio: exit {result.returncode}, expected the error '{expected}...'"
+                 f"\n{result.stdout[-2000:]}")
+    hold = [row for row in read_series(os.path.join(directory, "timeseries.csv")) if row["phase"] == "hold"]
+    lasted = float(hold[-1]["time"]) - float(hold[0]["time"])
+    if not 1.4 * hold_time <= lasted <= 1.5 * hold_time + 1e-9:
+        sys.exit(f"the unreachable hold lasted {lasted} µs, expected max_hold_time = {1.5 * hold_time} µs")
+    print(f"hold limit: stopped after {lasted:.4g} µs (max_hold_time {1.5 * hold_time}) with the engine's error")
+    # 3. release = "servo": the plate servo-unloads to p_r and the relax ends at p_r in equilibrium.
+    fraction = 0.2
+    directory = os.path.join(work, "servo")
+    path = os.path.join(work, "servo.toml")
+    with open(path, "w") as handle:
+        handle.write(with_calendering(text, release='"servo"', release_pressure_fraction=fraction,
+                                      relax_time=1.0))
+    run([args.ellc, "export-lammps", path, "-o", directory], work)
+    output = []
+    series = run_lammps(args, directory, 1, output)
+    phases = []
+    for row in series:
+        if not phases or phases[-1] != row["phase"]:
+            phases.append(row["phase"])
+    if phases[-1] == "done":  # a row of the last run's end, when it falls on a csv_every step
+        phases.pop()
+    if phases != ["load", "hold", "unload", "relax"]:
+        sys.exit(f"release = servo: phases {phases}, expected load, hold, unload, relax")
+    ends = STAGE_END.findall(output[0])
+    if [stage for stage, _, _ in ends] != ["hold", "relax"] or not float(ends[1][2]) < threshold:
+        sys.exit(f"release = servo: stage ends {ends}")
+    held = float([row for row in series if row["phase"] == "hold"][-1]["plate_pressure"])
+    released = float(series[-1]["plate_pressure"])
+    if abs(released - fraction * held) > 0.05 * fraction * held + 1e-9:
+        sys.exit(f"release = servo: released at {released} MPa, expected p_r = {fraction} x {held} MPa within 5 %")
+    print(f"release = servo: relaxed at {released:.4g} MPa = {released / held:.4g} x the held {held:.4g} MPa; "
+          f"ratio {float(ends[1][2]):.3g}")
 
 
 def check_export(args):
@@ -363,6 +469,7 @@ def check_export(args):
             sys.exit(f"ellc dem from the exported data file differs from the generated packing's run at row {first}")
         # The exported input runs in LAMMPS and writes the engine's columns through every phase.
         series = run_lammps(args, exported, 1)
+        check_equilibrium_ends(args, text, work)
     if list(series[0].keys()) != ENGINE_COLUMNS:
         sys.exit(f"timeseries.csv columns {list(series[0].keys())}, expected {ENGINE_COLUMNS}")
     engine_header = list(generated[0].keys())

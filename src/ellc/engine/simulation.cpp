@@ -9,6 +9,7 @@
 #include "ellc/assert.hpp"
 #include "ellc/contact/contact_energy.hpp"
 #include "ellc/engine/broad_phase.hpp"
+#include "ellc/engine/equilibrium.hpp"
 #include "ellc/engine/invariants.hpp"
 #include "ellc/engine/rigid_body.hpp"
 #include "ellc/geometry/wall_contact.hpp"
@@ -592,7 +593,6 @@ void Simulation::for_each_contact(const std::function<void(const ContactView&)>&
 
 double Simulation::unbalanced_force_ratio() const noexcept {
   const auto& p = particles_;
-  if (p.size() == 0) return 0.0;
   double net = 0.0;
   for (std::size_t slot = 0; slot < p.size(); ++slot) net += p.force[slot].norm();  // contact forces only
   double contact = 0.0;
@@ -608,8 +608,7 @@ double Simulation::unbalanced_force_ratio() const noexcept {
       contact += wall_results_[w][slot].force_on_wall.norm();
       ++contacts;
     }
-  if (!(contact > 0.0)) return 1.0;
-  return (net / static_cast<double>(p.size())) / (contact / static_cast<double>(contacts));
+  return engine::unbalanced_force_ratio(net, p.size(), contact, contacts);
 }
 
 ContactCounts Simulation::contact_counts() const noexcept {
