@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Sanitizer builds and the tests they run (part of scripts/test_all.sh, after the main ctest).
 #
-#   build-asan  ASan + UBSan (g++, libgomp): every C++ unit test of ctest. Not the Python, FE and
+#   build-asan  ASan + UBSan (g++, libgomp): the C++ unit tests of ctest but 15 long whole-run
+#               tests (listed in run_asan; ELLC_SANITIZE_ALL=1 adds them). Not the Python, FE and
 #               LAMMPS tests: those run uninstrumented interpreters and programs (built OFF here).
 #   build-tsan  TSan (clang++-15, LLVM's libomp): the engine's thread-determinism tests
 #               (test_engine --gtest_filter=EngineDeterminism.*), 2 OpenMP threads. Their dense
@@ -39,12 +40,24 @@ run_asan() {
   cmake -S . -B build-asan "${generator[@]}" "${common[@]}" -DELLC_SANITIZE=address,undefined >/dev/null
   cmake --build build-asan -j "$jobs"
   exclude='^(fea|python)\.'  # pytest suites: an uninstrumented interpreter
+  # Whole calendering, ensemble and settling runs take 40-210 s each under ASan (1300 s of the
+  # suite's 1470 s of CPU), and repeat code paths that the shorter tests of the same suites
+  # already run instrumented; their physics is asserted in the Release ctest. ELLC_SANITIZE_ALL=1
+  # runs them here too.
+  local long_runs='EngineCalendering\.SpringbackPositiveAndSmallerThanElastic|EnsembleOfTwo\.|'
+  long_runs+='DemEnsembleCli\.TwoSeedsWriteWhatTwoSingleRunsWrite|ReleasedState\.(ServoUnloads|ALargerResidual|ARelaxationNotReaching)|'
+  long_runs+='AnalyseCli\.CalenderingRunAnalysesItsStatesAndTheCheckpointAgrees|'
+  long_runs+='LoadingProtocol\.RampedPlateServoHoldAndAReadingAtEquilibrium|EngineSettling\.DepositComesToRest|'
+  long_runs+='EngineEnergyBalance\.WallWorkEqualsStoredPlusDissipatedEnergy|ScenarioValidity\.LoadedStateIsTheValidity|'
+  long_runs+='Ensemble\.AFailingMemberDoesNotStopTheOthers|ScenarioEnergyBalance\.PlateWorkIsStored|'
+  long_runs+='RandomPairs\.MillionPairsNoNanNoSilentFailure'
+  [[ ${ELLC_SANITIZE_ALL:-0} == 1 ]] || exclude="$exclude|^($long_runs)"
   local listing suites
   listing=$(ctest --test-dir build-asan -N -E "$exclude")
   count=$(sed -n 's/^Total Tests: //p' <<<"$listing")
   suites=$(sed -n 's/^ *Test *#[0-9]*: \([^.]*\)\..*/\1/p' <<<"$listing" | sort -u | tr '\n' ' ')
   echo "== sanitizers: ASan+UBSan (build-asan, Debug -O1, g++): ctest -E '$exclude' (not the Python/FE" \
-       "pytest suites; LAMMPS not built): $count tests of $suites"
+       "pytest suites, nor the long runs unless ELLC_SANITIZE_ALL=1; LAMMPS not built): $count tests of $suites"
   # ctest -j runs two test processes on two cores: OpenMP threads that spin at barriers would
   # take each other's core (libgomp spins by default), so they wait passively here.
   OMP_WAIT_POLICY=passive \

@@ -122,7 +122,7 @@ PosesContact find_contact(const PosesCase& poses) {
     found.result = ellipsoid_contact(found.body_i, body_j);
     found.material = mix(poses.body_i.spec.material, poses.body_j->spec.material);
     found.mean_radius_sum = found.body_i.mean_radius() + body_j.mean_radius();
-  } else {
+  } else if (poses.wall) {  // the reader guarantees one of the two
     found.result = wall_contact(found.body_i, poses.wall->plane);
     found.material = mix(poses.body_i.spec.material, poses.wall->material.value_or(poses.body_i.spec.material));
     found.mean_radius_sum = wall_mean_radius_sum(found.body_i);
