@@ -46,17 +46,21 @@ if ((${#files[@]} > 0)); then
     '"$1" -p build-tidy --quiet "$2" >"$3/$(echo "$2" | tr / _).log" 2>&1 || true' _ "$clang_tidy" {} "$out"
 fi
 # Findings in headers are reported once per including source: count each location once.
-findings=$(cat "$out"/*.log /dev/null | grep -E '^[^ ]+:[0-9]+:[0-9]+: (warning|error):' | sort -u || true)
+finding='^[^ ]+:[0-9]+:[0-9]+: (warning|error):'
+findings=$(cat "$out"/*.log /dev/null | grep -E "$finding" | sort -u || true)
 seconds=$(($(date +%s) - start))
+# Record the files whose own report is clean, also when others have findings (a finding in a
+# header shows in the report of every file that includes it, so those stay unrecorded).
+clean_keys=()
+for file in "${files[@]}"; do
+  [[ ${keys[$file]:-none} != none ]] || continue
+  grep -qE "$finding" "$out/$(echo "$file" | tr / _).log" || clean_keys+=("${keys[$file]}")
+done
+((${#clean_keys[@]} == 0)) || python3 scripts/tidy_cache.py mark "$cache" "${clean_keys[@]}"
 if [[ -n $findings ]]; then
   cat "$out"/*.log | grep -vE '^[0-9]+ warnings? (and [0-9]+ errors? )?generated\.$' >&2
   echo "tidy: $(wc -l <<<"$findings") findings in ${#files[@]} files (${seconds} s):" >&2
   echo "$findings" >&2
   exit 1
 fi
-clean_keys=()
-for file in "${files[@]}"; do
-  [[ ${keys[$file]:-none} != none ]] && clean_keys+=("${keys[$file]}")
-done
-((${#clean_keys[@]} == 0)) || python3 scripts/tidy_cache.py mark "$cache" "${clean_keys[@]}"
 echo "tidy: $all files clean ($version, ${seconds} s; $((all - ${#files[@]})) unchanged since a clean check)"
