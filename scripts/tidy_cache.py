@@ -70,9 +70,13 @@ def main():
     salt = (version + "\n").encode() + pathlib.Path(".clang-tidy").read_bytes()
     entries = {str(pathlib.Path(e["file"]).resolve()): e for e in json.loads(pathlib.Path(build, "compile_commands.json").read_text())}
     files = sys.argv[5:]
+
+    def key_of(name):  # None for a file without a compile command: clang-tidy then says why
+        entry = entries.get(str(pathlib.Path(name).resolve()))
+        return key(entry, root, salt) if entry else None
+
     with concurrent.futures.ThreadPoolExecutor(os.cpu_count() or 2) as pool:
-        keys = list(pool.map(lambda f: key(entries[str(pathlib.Path(f).resolve())], root, salt)
-                             if str(pathlib.Path(f).resolve()) in entries else None, files))
+        keys = list(pool.map(key_of, files))
     for name, value in zip(files, keys):
         if value is None or not (cache / value).exists():
             print(f"{name}\t{value or 'none'}")
