@@ -12,6 +12,7 @@
 #include "ellc/contact/contact_parameters.hpp"
 #include "ellc/contact/pair_contact.hpp"
 #include "ellc/engine/equilibrium.hpp"
+#include "ellc/engine/servo.hpp"
 #include "pair_coefficients.hpp"
 #include "pair_ellipsoid_bk.hpp"
 
@@ -403,6 +404,7 @@ void FixWallEllipsoidBK::wall_contacts(bool during_setup) {
           torque[i][k] -= forces.lever_cross_force[k];
           force_local_[static_cast<std::size_t>(3 * w + k)] += forces.contact.on_j[k];
         }
+        force_local_[static_cast<std::size_t>(6 + w)] += forces.contact.normal_stiffness;
         balance_local_[2] += forces.contact.on_j.norm();
       }
       if (!during_setup) record.write_to(stored);
@@ -447,7 +449,8 @@ double FixWallEllipsoidBK::unbalanced_force_ratio() {
 
 void FixWallEllipsoidBK::reduce_forces() {
   if (force_reduced_) return;
-  MPI_Allreduce(force_local_.data(), force_all_.data(), 6, MPI_DOUBLE, MPI_SUM, world);
+  MPI_Allreduce(force_local_.data(), force_all_.data(), static_cast<int>(force_local_.size()), MPI_DOUBLE, MPI_SUM,
+                world);
   force_reduced_ = true;
 }
 
@@ -456,13 +459,14 @@ double FixWallEllipsoidBK::plane_pressure(int plane) const {
   return plane == 0 ? -force_all_[2] / area : force_all_[5] / area;
 }
 
-// The built-in engine's servo: speed −RATE·clamp(g (P − p)/P, −1, 1) towards the particles.
+// The built-in engine's servo (ellc/engine/servo.hpp): speed RATE·clamp(g (P − p)/P, −1, 1)
+// towards the particles, capped at the stiffness of the plane's contacts.
 void FixWallEllipsoidBK::update_servo() {
   if (servo_plane_ < 0) return;
-  const double pressure = plane_pressure(servo_plane_);
-  const double error_fraction = (servo_pressure_ - pressure) / servo_pressure_;
-  double speed = servo_rate_ * std::clamp(servo_gain_ * error_fraction, -1.0, 1.0);
-  if (std::abs(error_fraction) <= servo_tolerance_) speed = 0.0;
+  const ellc::engine::PlateServo servo{servo_pressure_, servo_pressure_, servo_rate_, servo_gain_, servo_tolerance_};
+  const double stiffness_per_area =
+      force_all_[static_cast<std::size_t>(6 + servo_plane_)] / (domain->xprd * domain->yprd);
+  const double speed = ellc::engine::servo_speed(servo, plane_pressure(servo_plane_), stiffness_per_area, update->dt);
   planes_[static_cast<std::size_t>(servo_plane_)].velocity = kSide[servo_plane_] * speed;
 }
 

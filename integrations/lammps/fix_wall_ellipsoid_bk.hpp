@@ -122,8 +122,10 @@ class FixWallEllipsoidBK : public LAMMPS_NS::Fix {
   std::vector<ellc::InteractionContext> contexts_;  // per atom type (index 0 unused)
   std::vector<char> type_ready_;                    // 1 where pair_coeff I I exists
   std::vector<double> history_;                     // per atom: kPlanes records
-  std::array<double, 6> force_local_{};
-  std::array<double, 6> force_all_{};
+  // fx, fy, fz on the lower plane, then the upper (the global vector's first 6), then Σ k_n of
+  // each plane's contacts (the servo's loop gain, engine/servo.hpp): reduced together.
+  std::array<double, 8> force_local_{};
+  std::array<double, 8> force_all_{};
   bool force_reduced_ = false;
   // Σ |net contact force|, atoms, Σ |contact force|, contacts: this rank's, and over all ranks.
   std::array<double, 4> balance_local_{};

@@ -419,8 +419,10 @@ def check_equilibrium_ends(args, text, work):
     directory = os.path.join(work, "servo")
     path = os.path.join(work, "servo.toml")
     with open(path, "w") as handle:
+        # 20 µs: in this 20-particle bed the layer keeps giving way under the plate, which the servo
+        # (capped at the contacts' stiffness, engine/servo.hpp) follows in about 10 µs.
         handle.write(with_calendering(text, release='"servo"', release_pressure_fraction=fraction,
-                                      relax_time=1.0))
+                                      relax_time=1.0, max_relax_time=20.0))
     run([args.ellc, "export-lammps", path, "-o", directory], work)
     output = []
     series = run_lammps(args, directory, 1, output)
@@ -480,8 +482,10 @@ def check_export(args):
     for row in series:
         if not phases or phases[-1] != row["phase"]:
             phases.append(row["phase"])
-    if phases != ["load", "hold", "unload", "done"]:
-        sys.exit(f"phases {phases}, expected load, hold, unload, done")
+    if phases[-1] == "done":  # a row of the last run's end, when it falls on a csv_every step
+        phases.pop()
+    if phases != ["load", "hold", "unload"]:
+        sys.exit(f"phases {phases}, expected load, hold, unload (then done)")
     target = float(args.target)
     loaded = max(float(row["plate_pressure"]) for row in series if row["phase"] == "load")
     if loaded < target:

@@ -6,7 +6,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
+#include "ellc/engine/servo.hpp"
 #include "ellc/engine/simulation.hpp"
 #include "ellc/scenario/protocol_stages.hpp"
 #include "scenario_support.hpp"
@@ -28,9 +30,14 @@ TEST(LoadingProtocol, RampedPlateServoHoldAndAReadingAtEquilibrium) {
   double previous = runner.simulation().walls()[engine::kTopWall].velocity;
   double largest_change = 0.0;
   bool approach_ended_on_packing = false;
+  double largest_loop_gain = 0.0;  // of the hold's servo, g · speed · dt · k_A / P (engine/servo.hpp)
   while (!runner.done()) {
     const bool approaching = runner.state().approaching;
     runner.advance(1);
+    if (runner.state().phase == Phase::hold) {
+      const double stiffness_per_area = runner.simulation().wall_stiffness(engine::kTopWall) / (42.0 * 42.0);
+      largest_loop_gain = std::max(largest_loop_gain, 5.0 * 0.05 * dt * stiffness_per_area / 200.0);
+    }
     const double velocity = runner.simulation().walls()[engine::kTopWall].velocity;
     if (runner.state().phase != Phase::hold && runner.state().phase != Phase::done)
       largest_change = std::max(largest_change, std::abs(velocity - previous));
@@ -46,9 +53,31 @@ TEST(LoadingProtocol, RampedPlateServoHoldAndAReadingAtEquilibrium) {
   EXPECT_TRUE(approach_ended_on_packing);
   const RunSummary summary = runner.summary();
   EXPECT_NEAR(summary.held_pressure, 200.0, 1.0);  // the servo holds the target, no overshoot
+  // The example's servo runs far below the stiffness cap, which therefore never acts on it.
+  EXPECT_GT(largest_loop_gain, 0.0);
+  EXPECT_LT(largest_loop_gain, engine::kServoStepFraction);
   EXPECT_LT(summary.loaded_unbalanced_force_ratio, 1e-3);
   EXPECT_LT(summary.loaded_plate_speed, 1e-3 * 0.05);
   EXPECT_GT(summary.springback_percent, 0.0);
+}
+
+// A servo gain 40 times the default puts the plain law's loop gain (g · speed · dt · Σk_n / (A P))
+// above 2 on this packing: without the stiffness cap (engine/servo.hpp) the plate overshoots every
+// step and the pressure cycles by tens of per cent about a mean below the target.
+TEST(LoadingProtocol, AServoHoldFarAboveTheStableGainStillHoldsTheTargetWithoutACycle) {
+  std::string text = replace_line(quasi_static_text(), "hold =", "hold = \"servo\"\nservo_gain = 200.0");
+  ScenarioRunner runner(quick_scenario(text), testing::in_memory(512));
+  std::vector<double> hold;
+  while (!runner.done()) {
+    runner.advance(1);
+    if (runner.state().phase == Phase::hold) hold.push_back(runner.simulation().wall_pressure(engine::kTopWall));
+  }
+  ASSERT_GT(hold.size(), 200U);
+  double largest_jump = 0.0;  // step to step, over the hold's last 200 steps
+  for (std::size_t k = hold.size() - 200; k + 1 < hold.size(); ++k)
+    largest_jump = std::max(largest_jump, std::abs(hold[k + 1] - hold[k]));
+  EXPECT_LT(largest_jump, 0.01 * 200.0);
+  EXPECT_NEAR(runner.summary().held_pressure, 200.0, 2.0);
 }
 
 TEST(LoadingProtocol, AnEquilibriumNotReachedInTimeStopsTheRunNamingTheCriterion) {

@@ -151,6 +151,7 @@ ContactForce contact_force(const InteractionContext& context, const ContactConst
       law_force, viscous_damping(model.normal_damping, kinematics.effective_mass, branch.normal), normal_speed);
 
   ContactForce result;
+  result.normal_stiffness = branch.normal;
   result.damping_dissipation = (law_force - normal_force) * normal_speed * dt;
   const double k_t = tangential_stiffness(context, branch);
   const TangentialCoefficients tangential{

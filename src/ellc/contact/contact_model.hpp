@@ -94,6 +94,8 @@ struct ContactForce {
       0.0;  // normal dashpot −(F_n − F_law) v_n dt ≥ 0, tangential c_t |v_t|² dt while sticking
   double friction_dissipation =
       0.0;  // tangential work not kept by the spring (sliding): −F_t·v_t dt − ΔE_spring − the above
+  double normal_stiffness = 0.0;  // k_n of the damping sub-model on the current branch: a plate
+                                  // servo's loop gain (engine/servo.hpp) sums it over the plate
 };
 
 // Force on J of one touching contact whose law force F_law = law_force was evaluated with

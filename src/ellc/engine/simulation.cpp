@@ -298,6 +298,7 @@ void Simulation::evaluate_walls_and_reset(std::size_t slot) {
     force -= on_wall.contact.on_j;
     torque -= on_wall.lever_cross_force;
     result.force_on_wall = on_wall.contact.on_j;
+    result.normal_stiffness = on_wall.contact.normal_stiffness;
     result.damping_dissipation = on_wall.contact.damping_dissipation;
     result.friction_dissipation = on_wall.contact.friction_dissipation;
     result.regime = solution.law.regime;
@@ -635,6 +636,13 @@ double Simulation::wall_pressure(int wall) const noexcept {
 double Simulation::porosity() const noexcept {
   const double volume = settings_.box.lx * settings_.box.ly * gap();
   return volume > 0.0 ? 1.0 - particles_.total_volume() / volume : 1.0;
+}
+
+double Simulation::wall_stiffness(int wall) const noexcept {
+  double stiffness = 0.0;
+  for (std::size_t slot = 0; slot < wall_results_[wall].size(); ++slot)
+    if (wall_reported_[wall][slot] != 0) stiffness += wall_results_[wall][slot].normal_stiffness;
+  return stiffness;
 }
 
 std::size_t Simulation::wall_contact_count(int wall) const noexcept {

@@ -146,6 +146,9 @@ class Simulation {
   [[nodiscard]] double gap() const noexcept { return walls_[kTopWall].position - walls_[kBottomWall].position; }
   [[nodiscard]] double porosity() const noexcept;
   [[nodiscard]] std::size_t wall_contact_count(int wall) const noexcept;
+  // Σ k_n of the wall's contacts at the last force evaluation (µN/µm), for a servo's loop gain
+  // (engine/servo.hpp). 0 before the first step after a restart.
+  [[nodiscard]] double wall_stiffness(int wall) const noexcept;
   [[nodiscard]] double highest_point() const noexcept;  // max z of the bounding spheres
 
   // Full state (particles, walls, contact histories, neighbour list, counters) for restart.
@@ -169,6 +172,7 @@ class Simulation {
   };
   struct WallResult : ContactTally {
     Eigen::Vector3d force_on_wall = Eigen::Vector3d::Zero();
+    double normal_stiffness = 0.0;  // k_n (ContactForce); derived each step, not in checkpoints
   };
   // A result slot is only written when this step has something to say (a contact, released
   // plastic work, a failure); a byte per slot (1 = written this step) says which slots are

@@ -6,6 +6,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "ellc/engine/servo.hpp"
 #include "ellc/geometry/ellipsoid.hpp"
 #include "ellc/io/input_error.hpp"
 
@@ -19,6 +20,12 @@ using engine::Simulation;
 using engine::Wall;
 
 namespace {
+
+// The top plate's servo speed towards the particles (engine/servo.hpp), at its contacts' stiffness.
+double plate_servo_speed(const Simulation& sim, const engine::PlateServo& servo, double pressure) {
+  const auto& box = sim.settings().box;
+  return engine::servo_speed(servo, pressure, sim.wall_stiffness(kTopWall) / (box.lx * box.ly), sim.settings().dt);
+}
 
 double summed_mass(const ParticleSet& particles) {
   double total = 0.0;
@@ -127,9 +134,9 @@ bool LoadingProtocol::servo_release_step(Simulation& sim, double pressure) const
   const double target = release_pressure();
   const bool within = std::abs(pressure - target) <= spec.release_tolerance * target;
   const double envelope = std::abs(sim.walls()[kTopWall].velocity);  // the ramp's speed, set just before
-  const double servo =
-      within ? 0.0
-             : spec.lift_speed * std::clamp(spec.servo_gain * (pressure - target) / state_.loaded.pressure, -1.0, 1.0);
+  const engine::PlateServo servo_law{target, state_.loaded.pressure, spec.lift_speed, spec.servo_gain,
+                                     spec.release_tolerance};
+  const double servo = within ? 0.0 : -plate_servo_speed(sim, servo_law, pressure);
   sim.set_wall_velocity(kTopWall, state_.phase == Phase::unload ? std::clamp(servo, -envelope, envelope) : servo);
   return within;
 }
@@ -247,10 +254,9 @@ std::optional<Phase> LoadingProtocol::after_step(Simulation& sim) {
     }
     case Phase::hold: {
       if (spec.servo_hold && spec.target_pressure) {
-        const double error = (*spec.target_pressure - pressure) / *spec.target_pressure;
-        const double speed =
-            std::abs(error) <= spec.servo_tolerance ? 0.0 : std::clamp(spec.servo_gain * error, -1.0, 1.0);
-        sim.set_wall_velocity(kTopWall, -spec.speed * speed);
+        const engine::PlateServo servo_law{*spec.target_pressure, *spec.target_pressure, spec.speed, spec.servo_gain,
+                                           spec.servo_tolerance};
+        sim.set_wall_velocity(kTopWall, -plate_servo_speed(sim, servo_law, pressure));
       }
       if (sim.time() < state_.phase_end_time) break;
       const double ratio = sim.unbalanced_force_ratio();
