@@ -5,8 +5,8 @@
 #include <cmath>
 #include <memory>
 
+#include "ellc/contact/contact_size.hpp"
 #include "ellc/engine/rigid_body.hpp"
-#include "ellc/engine/simulation.hpp"
 #include "fix_contact_history.hpp"
 
 namespace ellc_lammps {
@@ -395,8 +395,8 @@ void PairEllipsoidBK::compute(int eflag, int vflag) {
         record.regime = static_cast<int>(result.law.regime);
         ellc::ContactConstants size;  // the one constant c_c/r̂ needs, into the engine's definition
         size.contact_radius_sq_per_overlap = result.contact_radius_sq_per_overlap;
-        record.size_ratio = ellc::engine::contact_size_ratio(size, result.law.max_overlap,
-                                                             std::min(atom_a.mean_radius, atom_b.mean_radius));
+        record.size_ratio =
+            ellc::contact_size_ratio(size, result.law.max_overlap, std::min(atom_a.mean_radius, atom_b.mean_radius));
         record.normal_force = result.normal_force;
         record.tangential_force = (result.force_on_b - result.normal_force * result.normal).norm();
         record.force_on_i = force_on_i;

@@ -500,10 +500,6 @@ double Simulation::spring_energy() const noexcept {
   return energy;
 }
 
-double contact_size_ratio(const ContactConstants& constants, double max_overlap, double mean_radius) noexcept {
-  return std::sqrt(constants.contact_radius_sq_per_overlap * std::max(max_overlap, 0.0)) / mean_radius;
-}
-
 ValidityReport Simulation::validity(double threshold) const noexcept {
   ValidityReport report;
   report.threshold = threshold;

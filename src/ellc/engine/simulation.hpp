@@ -18,6 +18,7 @@
 
 #include "ellc/contact/contact_history.hpp"
 #include "ellc/contact/contact_model.hpp"
+#include "ellc/contact/contact_size.hpp"
 #include "ellc/contact/pair_contact.hpp"
 #include "ellc/engine/pair_map.hpp"
 #include "ellc/engine/particles.hpp"
@@ -74,10 +75,6 @@ struct ValidityReport {
   double wall_force_beyond = 0.0;
   double largest_ratio = 0.0;  // max c_c/r̂ over all contacts
 };
-
-// c_c/r̂ of one contact as ValidityReport defines it.
-[[nodiscard]] double contact_size_ratio(const ContactConstants& constants, double max_overlap,
-                                        double mean_radius) noexcept;
 
 // One contact of the last force evaluation, for outputs (Simulation::for_each_contact): the
 // contacts ValidityReport and ContactCounts count, a pair of particles or a particle on a wall.
