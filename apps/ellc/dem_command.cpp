@@ -237,13 +237,37 @@ std::vector<const ComparedLaw*> compared_laws(const DemOptions& options) {
   return laws;
 }
 
+// The rows of the --compare table: a figure of each run's summary.
+struct ComparedFigure {
+  const char* name;
+  double (*of)(const scenario::RunSummary&);
+  const char* unit;
+};
+using Summary = scenario::RunSummary;
+constexpr ComparedFigure kComparedFigures[] = {
+    {"springback", [](const Summary& s) { return s.springback_percent; }, "%"},
+    {"loaded_thickness", [](const Summary& s) { return s.loaded_thickness; }, "um"},
+    {"loaded_porosity", [](const Summary& s) { return s.loaded_porosity; }, ""},
+    {"final_thickness", [](const Summary& s) { return s.final_thickness; }, "um"},
+    {"final_porosity", [](const Summary& s) { return s.final_porosity; }, ""},
+    {"max_pressure", [](const Summary& s) { return s.max_pressure; }, "MPa"},
+    {"held_pressure", [](const Summary& s) { return s.held_pressure; }, "MPa"},
+    {"plastic_dissipation", [](const Summary& s) { return s.plastic_dissipation; }, "pJ"},
+    {"plate_work", [](const Summary& s) { return s.plate_work; }, "pJ (net over the cycle: what was dissipated)"},
+    {"plastic_share_of_plate_work", [](const Summary& s) { return s.plastic_share_of_plate_work(); }, ""},
+    {"energy_residual_fraction", [](const Summary& s) { return s.energy_residual_fraction; }, ""},
+    {"narrow_phase_failures", [](const Summary& s) { return static_cast<double>(s.narrow_phase_failures); }, ""},
+};
+
 // The same packing with each law into DIR/<law>; what the scenario's law changes, printed, in
 // DIR/compare_<law>[_<law>].txt (compare_hertz.txt for --compare-hertz), and the loading curves
-// of all laws in DIR/pressure_thickness_compare.png.
-void compare_laws(const DemOptions& options, const scenario::Scenario& loaded, const scenario::RunSummary& law,
+// of all laws in DIR/pressure_thickness_compare.png. A law whose run fails (e.g. it cannot reach
+// the target pressure) is named in the table and the error, and the others are still compared.
+void compare_laws(const DemOptions& options, const scenario::Scenario& loaded, const Summary& law,
                   const std::vector<const ComparedLaw*>& laws, const std::string& directory) {
   const std::string own_name(name_of(loaded.contact.model.normal));
-  std::vector<std::pair<std::string, scenario::RunSummary>> runs{{own_name, law}};
+  std::vector<std::pair<std::string, Summary>> runs{{own_name, law}};
+  std::vector<std::string> failures;  // "law: message"
   std::string file_name = "compare";
   for (const ComparedLaw* compared : laws) {
     scenario::Scenario variant = loaded;
@@ -255,66 +279,52 @@ void compare_laws(const DemOptions& options, const scenario::Scenario& loaded, c
     quiet.restart_path.clear();
     std::printf("== the same packing with %s (--compare), into %s\n", compared->description,
                 quiet.output_directory.c_str());
-    runs.emplace_back(compared->name, run_single(quiet, std::move(variant)));
+    std::fflush(stdout);
     file_name += std::string("_") + compared->name;
+    try {
+      runs.emplace_back(compared->name, run_single(quiet, std::move(variant)));
+    } catch (const std::exception& error) {
+      std::printf("ellc dem: --compare %s failed: %s\n", compared->name, error.what());
+      failures.push_back(std::string(compared->name) + ": " + error.what());
+    }
   }
   std::string table = "# ellc dem --compare: " + options.scenario_path + "\n# " + std::string(26, ' ');
+  char text[64];
   for (const auto& run : runs) {
-    char header[64];
-    std::snprintf(header, sizeof header, " %16s", run.first.c_str());
-    table += header;
+    std::snprintf(text, sizeof text, " %16s", run.first.c_str());
+    table += text;
   }
   table += "\n";
-  const auto row = [&](const char* name, double (*figure)(const scenario::RunSummary&), const char* unit) {
-    char text[64];
-    std::snprintf(text, sizeof text, "%-28s", name);
+  for (const ComparedFigure& figure : kComparedFigures) {
+    std::snprintf(text, sizeof text, "%-28s", figure.name);
     table += text;
     for (const auto& run : runs) {
-      std::snprintf(text, sizeof text, " %16.7g", figure(run.second));
+      std::snprintf(text, sizeof text, " %16.7g", figure.of(run.second));
       table += text;
     }
-    table += std::string("  ") + unit + "\n";
-  };
-  using S = scenario::RunSummary;
-  row(
-      "springback", [](const S& s) { return s.springback_percent; }, "%");
-  row(
-      "loaded_thickness", [](const S& s) { return s.loaded_thickness; }, "um");
-  row(
-      "loaded_porosity", [](const S& s) { return s.loaded_porosity; }, "");
-  row(
-      "final_thickness", [](const S& s) { return s.final_thickness; }, "um");
-  row(
-      "final_porosity", [](const S& s) { return s.final_porosity; }, "");
-  row(
-      "max_pressure", [](const S& s) { return s.max_pressure; }, "MPa");
-  row(
-      "held_pressure", [](const S& s) { return s.held_pressure; }, "MPa");
-  row(
-      "plastic_dissipation", [](const S& s) { return s.plastic_dissipation; }, "pJ");
-  row(
-      "plate_work", [](const S& s) { return s.plate_work; }, "pJ (net over the cycle: what was dissipated)");
-  row(
-      "plastic_share_of_plate_work", [](const S& s) { return s.plastic_share_of_plate_work(); }, "");
-  row(
-      "energy_residual_fraction", [](const S& s) { return s.energy_residual_fraction; }, "");
-  row(
-      "narrow_phase_failures", [](const S& s) { return static_cast<double>(s.narrow_phase_failures); }, "");
+    table += std::string("  ") + figure.unit + "\n";
+  }
+  for (const std::string& failure : failures) table += "# failed, not in the table: " + failure + "\n";
   std::printf("%s", table.c_str());
   const auto base = std::filesystem::path(directory);
   std::ofstream((base / (file_name + ".txt")).string()) << table;
   std::printf("  table: %s\n", (base / (file_name + ".txt")).string().c_str());
-  if (options.no_plot) return;
-  std::vector<std::string> plot{"dem-compare", (base / "pressure_thickness_compare.png").string(), "--title",
-                                options.scenario_path, (base / "timeseries.csv").string()};
-  std::string labels = own_name;
-  for (const ComparedLaw* compared : laws) {
-    plot.push_back((base / compared->name / "timeseries.csv").string());
-    labels += std::string(",") + compared->name;
+  if (!options.no_plot) {
+    std::vector<std::string> plot{"dem-compare", (base / "pressure_thickness_compare.png").string(), "--title",
+                                  options.scenario_path, (base / "timeseries.csv").string()};
+    std::string labels = own_name;
+    for (std::size_t index = 1; index < runs.size(); ++index) {  // the laws that finished
+      plot.push_back((base / runs[index].first / "timeseries.csv").string());
+      labels += "," + runs[index].first;
+    }
+    plot.insert(plot.end(), {"--labels", labels});
+    run_python_plot(plot);
+    std::printf("  plot: %s\n", (base / "pressure_thickness_compare.png").string().c_str());
   }
-  plot.insert(plot.end(), {"--labels", labels});
-  run_python_plot(plot);
-  std::printf("  plot: %s\n", (base / "pressure_thickness_compare.png").string().c_str());
+  if (!failures.empty())
+    throw std::runtime_error("--compare: " + std::to_string(failures.size()) + " of " + std::to_string(laws.size()) +
+                             " compared laws failed (" + failures.front() + (failures.size() > 1 ? "; ..." : "") +
+                             "); " + (base / (file_name + ".txt")).string() + " holds the others");
 }
 
 // The whole of `text` as an integer, or an InputError naming the option.

@@ -86,7 +86,8 @@ class DemCompareCli : public ::testing::Test {
 
 TEST_F(DemCompareCli, EachLawIsRunAndTabulatedWithItsPlasticShare) {
   const fs::path out = dir / "compare";
-  const CliRun run = run_cli("dem " + tiny_scenario() + " --compare hertz,thornton -q --no-plot -j 1 -o " + out.string());
+  const CliRun run =
+      run_cli("dem " + tiny_scenario() + " --compare hertz,thornton -q --no-plot -j 1 -o " + out.string());
   ASSERT_EQ(run.exit_code, 0) << run.output;
   const std::map<std::string, std::map<std::string, double>> runs = {
       {"becker_kamlah", summary_numbers(out / "summary.txt")},
@@ -111,11 +112,11 @@ TEST_F(DemCompareCli, EachLawIsRunAndTabulatedWithItsPlasticShare) {
   const std::string table = read_text(out / "compare_hertz_thornton.txt");
   EXPECT_NE(table.find("becker_kamlah            hertz         thornton"), std::string::npos) << table;
   const char* const laws[] = {"becker_kamlah", "hertz", "thornton"};
-  for (const auto& [row, key] : std::map<std::string, std::string>{{"springback", "springback_percent"},
-                                                                   {"loaded_thickness", "loaded_thickness_um"},
-                                                                   {"plastic_share_of_plate_work",
-                                                                    "plastic_share_of_plate_work"},
-                                                                   {"plastic_dissipation", "plastic_dissipation_pJ"}}) {
+  for (const auto& [row, key] :
+       std::map<std::string, std::string>{{"springback", "springback_percent"},
+                                          {"loaded_thickness", "loaded_thickness_um"},
+                                          {"plastic_share_of_plate_work", "plastic_share_of_plate_work"},
+                                          {"plastic_dissipation", "plastic_dissipation_pJ"}}) {
     const std::vector<double> numbers = table_row(table, row);
     ASSERT_EQ(numbers.size(), 3U) << row << "\n" << table;
     for (std::size_t index = 0; index < 3; ++index) {
@@ -165,21 +166,18 @@ TEST(DuctileExample, ValidatesAndCarriesTheFittedAluminiumConstants) {
   const ellc::LawParameters expected = ellc::read_model(model).law;
   const ellc::LawParameters& law = scenario.contact.model.law;
   EXPECT_EQ(law.fit.form, ellc::TransitionForm::stiffness_ratio);
-  for (const auto& [name, got, want] : {std::tuple{"m", law.fit.lambda_amplitude, expected.fit.lambda_amplitude},
-                                        std::tuple{"o", law.fit.lambda_rate, expected.fit.lambda_rate},
-                                        std::tuple{"p", law.fit.lambda_offset, expected.fit.lambda_offset},
-                                        std::tuple{"s", law.fit.epsilon_amplitude, expected.fit.epsilon_amplitude},
-                                        std::tuple{"t", law.fit.epsilon_rate, expected.fit.epsilon_rate},
-                                        std::tuple{"u", law.fit.epsilon_offset, expected.fit.epsilon_offset},
-                                        std::tuple{"n", law.fit.transition_exponent, expected.fit.transition_exponent},
-                                        std::tuple{"q_lambda", law.fit.lambda_stiffness_exponent,
-                                                   expected.fit.lambda_stiffness_exponent},
-                                        std::tuple{"q_epsilon", law.fit.epsilon_stiffness_exponent,
-                                                   expected.fit.epsilon_stiffness_exponent},
-                                        std::tuple{"eta_ref", law.fit.reference_stiffness_ratio,
-                                                   expected.fit.reference_stiffness_ratio},
-                                        std::tuple{"yield_pressure_factor", law.yield_pressure_factor,
-                                                   expected.yield_pressure_factor}})
+  for (const auto& [name, got, want] :
+       {std::tuple{"m", law.fit.lambda_amplitude, expected.fit.lambda_amplitude},
+        std::tuple{"o", law.fit.lambda_rate, expected.fit.lambda_rate},
+        std::tuple{"p", law.fit.lambda_offset, expected.fit.lambda_offset},
+        std::tuple{"s", law.fit.epsilon_amplitude, expected.fit.epsilon_amplitude},
+        std::tuple{"t", law.fit.epsilon_rate, expected.fit.epsilon_rate},
+        std::tuple{"u", law.fit.epsilon_offset, expected.fit.epsilon_offset},
+        std::tuple{"n", law.fit.transition_exponent, expected.fit.transition_exponent},
+        std::tuple{"q_lambda", law.fit.lambda_stiffness_exponent, expected.fit.lambda_stiffness_exponent},
+        std::tuple{"q_epsilon", law.fit.epsilon_stiffness_exponent, expected.fit.epsilon_stiffness_exponent},
+        std::tuple{"eta_ref", law.fit.reference_stiffness_ratio, expected.fit.reference_stiffness_ratio},
+        std::tuple{"yield_pressure_factor", law.yield_pressure_factor, expected.yield_pressure_factor}})
     EXPECT_EQ(got, want) << name;
 }
 
