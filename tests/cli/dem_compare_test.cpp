@@ -128,9 +128,10 @@ TEST_F(DemCompareCli, EachLawIsRunAndTabulatedWithItsPlasticShare) {
 
 TEST_F(DemCompareCli, CompareHertzIsCompareHertz) {
   const fs::path out = dir / "hertz_only";
-  const CliRun run = run_cli("dem " + tiny_scenario() + " --compare-hertz -q --no-plot -j 1 -o " + out.string());
+  const CliRun run = run_cli("dem " + tiny_scenario() + " --compare-hertz -q -j 1 -o " + out.string());
   ASSERT_EQ(run.exit_code, 0) << run.output;
   EXPECT_TRUE(fs::exists(out / "hertz" / "summary.txt"));
+  EXPECT_TRUE(fs::exists(out / "pressure_thickness_compare.png"));  // both laws' curves
   EXPECT_FALSE(fs::exists(out / "thornton"));
   const std::vector<double> plastic = table_row(read_text(out / "compare_hertz.txt"), "plastic_dissipation");
   ASSERT_EQ(plastic.size(), 2U);
