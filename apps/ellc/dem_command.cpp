@@ -204,7 +204,10 @@ constexpr ComparedLaw kComparedLaws[] = {
     {"hertz", "plain Hertz (normal = \"hertz\": no plasticity)",
      [](scenario::Scenario& s) { s.contact.model.normal = NormalModel::hertz; }},
     {"thornton", "Thornton's elastic-perfectly-plastic law (lambda = 1.6: m = 0, p = 1.6, docs/model.md Sec. 4)",
-     [](scenario::Scenario& s) { s.contact.model.law = s.contact.model.law.elastic_fully_plastic(); }},
+     [](scenario::Scenario& s) {
+       s.contact.model.normal = NormalModel::becker_kamlah;  // also when the scenario's own law is Hertz
+       s.contact.model.law = s.contact.model.law.elastic_fully_plastic();
+     }},
 };
 
 std::string compared_law_names() {
@@ -425,7 +428,8 @@ void run_members(const DemOptions& options, const scenario::Scenario& loaded, co
 // limits only with --force, and never what the engine cannot represent.
 void check_plan(const DemOptions& options, const scenario::Scenario& loaded) {
   const scenario::RunPlan plan = scenario::plan_run(loaded);
-  if (!options.quiet) std::fprintf(stderr, "ellc dem: plan: %s\n", scenario::describe_plan(plan).c_str());
+  if (!options.quiet && !options.check)  // --check prints it as its result
+    std::fprintf(stderr, "ellc dem: plan: %s\n", scenario::describe_plan(plan).c_str());
   if (!plan.impossible.empty())
     throw InputError(loaded.source, plan.impossible.front() + " (refused even with --force)");
   if (plan.beyond_limits.empty()) return;
