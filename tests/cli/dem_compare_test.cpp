@@ -72,13 +72,19 @@ class DemCompareCli : public ::testing::Test {
   void SetUp() override { fs::create_directories(dir); }
   void TearDown() override { fs::remove_all(dir); }
 
-  // examples/calendering_quick.toml with 20 particles (about one layer): a cycle in a second.
-  std::string tiny_scenario() {
+  // examples/calendering_quick.toml with 20 particles (about one layer): a cycle in a second;
+  // `target_pressure` replaced when not empty.
+  std::string tiny_scenario(const std::string& target_pressure = "") {
     std::string text = read_text(fs::path(ELLC_EXAMPLES_DIR) / "calendering_quick.toml");
     const auto at = text.find("\ncount = 100");
     EXPECT_NE(at, std::string::npos);
     text.replace(at, 12, "\ncount = 20");
-    const fs::path file = dir / "tiny.toml";
+    if (!target_pressure.empty()) {
+      const auto target = text.find("\ntarget_pressure = 200.0");
+      EXPECT_NE(target, std::string::npos);
+      text.replace(target, 24, "\ntarget_pressure = " + target_pressure);
+    }
+    const fs::path file = dir / ("tiny" + target_pressure + ".toml");
     std::ofstream(file) << text;
     return file.string();
   }
@@ -137,6 +143,24 @@ TEST_F(DemCompareCli, CompareHertzIsCompareHertz) {
   ASSERT_EQ(plastic.size(), 2U);
   EXPECT_GT(plastic[0], 0.0);
   EXPECT_EQ(plastic[1], 0.0);
+}
+
+// 4500 MPa on the 20 NMC particles: the calibrated law reaches it (its layer reaches the solid's
+// thickness only at 5330 MPa), Thornton's λ ≡ 1.6 carries less and reaches the solid's thickness
+// at 3840 MPa. The failure is named, the others are tabulated, and the exit code is 1.
+TEST_F(DemCompareCli, AFailingLawIsNamedAndTheOthersAreStillTabulated) {
+  const fs::path out = dir / "failing";
+  const CliRun run =
+      run_cli("dem " + tiny_scenario("4500.0") + " --compare hertz,thornton -q --no-plot -j 1 -o " + out.string());
+  EXPECT_EQ(run.exit_code, 1) << run.output;
+  EXPECT_NE(run.output.find("1 of 2 compared laws failed (thornton: calendering.target_pressure = 4500 MPa cannot be"),
+            std::string::npos)
+      << run.output;
+  const std::string table = read_text(out / "compare_hertz_thornton.txt");
+  EXPECT_EQ(table_row(table, "springback").size(), 2U) << table;  // the calibrated law and Hertz
+  EXPECT_NE(table.find("\n# failed, not in the table: thornton: "), std::string::npos) << table;
+  EXPECT_TRUE(fs::exists(out / "hertz" / "summary.txt"));
+  EXPECT_TRUE(fs::exists(out / "thornton" / "checkpoint_failure.bin"));
 }
 
 TEST_F(DemCompareCli, UnknownOrRepeatedLawsExitWithCode2) {
