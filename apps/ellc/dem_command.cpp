@@ -4,6 +4,9 @@
 // `--seeds N [--jobs 2]` (or `[packing] seeds = [...]`): one run per packing seed in DIR/seed_<s>/,
 // and DIR/ensemble_summary.{txt,csv}, DIR/pressure_thickness_ensemble.png (docs/engine.md,
 // "Ensembles over packing seeds"). Exit code 1 when a member failed; the others still run.
+// `--compare hertz,thornton` (`--compare-hertz` = `--compare hertz`): the same packing again with
+// each named law, in DIR/<law>/, tabulated in DIR/compare_<laws>.txt (docs/engine.md, "What the
+// law changes"). `--check`: read and validate the scenario, print the plan, run nothing.
 
 #include <unistd.h>
 
@@ -52,6 +55,8 @@ struct DemOptions {
   std::string seeds;           // --seeds N: an ensemble of N consecutive packing seeds
   std::string jobs;            // --jobs J: ensemble members side by side
   bool compare_hertz = false;  // --compare-hertz: the same packing again with plain Hertz
+  std::string compare;         // --compare LAW[,LAW]: the same packing again with each law
+  bool check = false;          // --check: validate the scenario and print its plan only
 };
 
 std::string clock_text(double seconds) {
@@ -115,6 +120,8 @@ void print_summary(const scenario::RunSummary& s, const std::string& directory, 
   std::printf("  springback        %.4g %%\n", s.springback_percent);
   std::printf("  plastic energy    %.6g pJ (%.6g pJ while calendering)\n", s.plastic_dissipation,
               s.plastic_dissipation_calendering);
+  std::printf("  plastic share     %.4g %% of the plate work (%.6g pJ)\n", 100.0 * s.plastic_share_of_plate_work(),
+              s.plate_work);
   std::printf("  energy residual   %.4g pJ (%.2g %% of the work done)\n", s.energy_residual,
               100.0 * s.energy_residual_fraction);
   if (s.loaded_state_recorded)
@@ -186,36 +193,141 @@ scenario::RunSummary run_single(const DemOptions& options, scenario::Scenario lo
   return summary;
 }
 
-// --compare-hertz: the same scenario (same packing, same protocol) with the normal law replaced
-// by plain Hertz, into DIR/hertz; what plasticity changes, printed and in DIR/compare_hertz.txt.
-void compare_with_hertz(const DemOptions& options, const scenario::Scenario& loaded, const scenario::RunSummary& law,
-                        const std::string& directory) {
-  scenario::Scenario hertz = loaded;
-  hertz.contact.model.normal = NormalModel::hertz;
-  DemOptions quiet = options;
-  quiet.output_directory = (std::filesystem::path(directory) / "hertz").string();
-  quiet.quiet = true;
-  quiet.no_plot = true;
-  quiet.restart_path.clear();
-  std::printf("== the same packing with plain Hertz (--compare-hertz), into %s\n", quiet.output_directory.c_str());
-  const scenario::RunSummary elastic = run_single(quiet, std::move(hertz));
-  const auto row = [](const char* name, double a, double b, const char* unit) {
-    char text[160];
-    std::snprintf(text, sizeof text, "%-26s %12.6g %12.6g  %s\n", name, a, b, unit);
-    return std::string(text);
+// The laws `--compare` runs the same scenario with (same packing, same protocol), each a change of
+// the scenario's contact model.
+struct ComparedLaw {
+  const char* name;
+  const char* description;
+  void (*apply)(scenario::Scenario&);
+};
+constexpr ComparedLaw kComparedLaws[] = {
+    {"hertz", "plain Hertz (normal = \"hertz\": no plasticity)",
+     [](scenario::Scenario& s) { s.contact.model.normal = NormalModel::hertz; }},
+    {"thornton", "Thornton's elastic-perfectly-plastic law (lambda = 1.6: m = 0, p = 1.6, docs/model.md Sec. 4)",
+     [](scenario::Scenario& s) {
+       s.contact.model.normal = NormalModel::becker_kamlah;  // also when the scenario's own law is Hertz
+       s.contact.model.law = s.contact.model.law.elastic_fully_plastic();
+     }},
+};
+
+std::string compared_law_names() {
+  std::string names;
+  for (const ComparedLaw& law : kComparedLaws) names += (names.empty() ? "" : ", ") + std::string(law.name);
+  return names;
+}
+
+// --compare's comma-separated list (and --compare-hertz), each law once, in the order given.
+std::vector<const ComparedLaw*> compared_laws(const DemOptions& options) {
+  std::vector<const ComparedLaw*> laws;
+  const std::string expected = "a comma-separated list of laws, each once, from: " + compared_law_names();
+  const auto add = [&](const std::string& name) {
+    const auto* law = std::find_if(std::begin(kComparedLaws), std::end(kComparedLaws),
+                                   [&](const ComparedLaw& known) { return name == known.name; });
+    if (law == std::end(kComparedLaws) || std::find(laws.begin(), laws.end(), law) != laws.end())
+      throw InputError("", "--compare", options.compare, expected);
+    laws.push_back(law);
   };
-  std::string table = "# ellc dem --compare-hertz: " + options.scenario_path + "\n";
-  table += "#                          becker_kamlah        hertz\n";
-  table += row("springback", law.springback_percent, elastic.springback_percent, "%");
-  table += row("loaded_thickness", law.loaded_thickness, elastic.loaded_thickness, "um");
-  table += row("final_thickness", law.final_thickness, elastic.final_thickness, "um");
-  table += row("held_pressure", law.held_pressure, elastic.held_pressure, "MPa");
-  table += row("plastic_dissipation", law.plastic_dissipation, elastic.plastic_dissipation, "pJ");
-  table += row("plate_work", law.plate_work, elastic.plate_work, "pJ (net over the cycle: what was dissipated)");
-  table += row("plastic_share_of_work", law.plate_work > 0 ? law.plastic_dissipation / law.plate_work : 0.0,
-               elastic.plate_work > 0 ? elastic.plastic_dissipation / elastic.plate_work : 0.0, "");
+  if (options.compare_hertz) add("hertz");
+  if (options.compare.empty()) return laws;
+  std::size_t begin = 0;
+  while (true) {
+    const std::size_t comma = options.compare.find(',', begin);
+    const std::string name = options.compare.substr(begin, comma == std::string::npos ? comma : comma - begin);
+    if (!(options.compare_hertz && name == "hertz")) add(name);  // --compare-hertz --compare hertz: once
+    if (comma == std::string::npos) break;
+    begin = comma + 1;
+  }
+  return laws;
+}
+
+// The rows of the --compare table: a figure of each run's summary.
+struct ComparedFigure {
+  const char* name;
+  double (*of)(const scenario::RunSummary&);
+  const char* unit;
+};
+using Summary = scenario::RunSummary;
+constexpr ComparedFigure kComparedFigures[] = {
+    {"springback", [](const Summary& s) { return s.springback_percent; }, "%"},
+    {"loaded_thickness", [](const Summary& s) { return s.loaded_thickness; }, "um"},
+    {"loaded_porosity", [](const Summary& s) { return s.loaded_porosity; }, ""},
+    {"final_thickness", [](const Summary& s) { return s.final_thickness; }, "um"},
+    {"final_porosity", [](const Summary& s) { return s.final_porosity; }, ""},
+    {"max_pressure", [](const Summary& s) { return s.max_pressure; }, "MPa"},
+    {"held_pressure", [](const Summary& s) { return s.held_pressure; }, "MPa"},
+    {"plastic_dissipation", [](const Summary& s) { return s.plastic_dissipation; }, "pJ"},
+    {"plate_work", [](const Summary& s) { return s.plate_work; }, "pJ (net over the cycle: what was dissipated)"},
+    {"plastic_share_of_plate_work", [](const Summary& s) { return s.plastic_share_of_plate_work(); }, ""},
+    {"energy_residual_fraction", [](const Summary& s) { return s.energy_residual_fraction; }, ""},
+    {"narrow_phase_failures", [](const Summary& s) { return static_cast<double>(s.narrow_phase_failures); }, ""},
+};
+
+// The same packing with each law into DIR/<law>; what the scenario's law changes, printed, in
+// DIR/compare_<law>[_<law>].txt (compare_hertz.txt for --compare-hertz), and the loading curves
+// of all laws in DIR/pressure_thickness_compare.png. A law whose run fails (e.g. it cannot reach
+// the target pressure) is named in the table and the error, and the others are still compared.
+void compare_laws(const DemOptions& options, const scenario::Scenario& loaded, const Summary& law,
+                  const std::vector<const ComparedLaw*>& laws, const std::string& directory) {
+  const std::string own_name(name_of(loaded.contact.model.normal));
+  std::vector<std::pair<std::string, Summary>> runs{{own_name, law}};
+  std::vector<std::string> failures;  // "law: message"
+  std::string file_name = "compare";
+  for (const ComparedLaw* compared : laws) {
+    scenario::Scenario variant = loaded;
+    compared->apply(variant);
+    DemOptions quiet = options;
+    quiet.output_directory = (std::filesystem::path(directory) / compared->name).string();
+    quiet.quiet = true;
+    quiet.no_plot = true;
+    quiet.restart_path.clear();
+    std::printf("== the same packing with %s (--compare), into %s\n", compared->description,
+                quiet.output_directory.c_str());
+    std::fflush(stdout);
+    file_name += std::string("_") + compared->name;
+    try {
+      runs.emplace_back(compared->name, run_single(quiet, std::move(variant)));
+    } catch (const std::exception& error) {
+      std::printf("ellc dem: --compare %s failed: %s\n", compared->name, error.what());
+      failures.push_back(std::string(compared->name) + ": " + error.what());
+    }
+  }
+  std::string table = "# ellc dem --compare: " + options.scenario_path + "\n# " + std::string(26, ' ');
+  char text[64];
+  for (const auto& run : runs) {
+    std::snprintf(text, sizeof text, " %16s", run.first.c_str());
+    table += text;
+  }
+  table += "\n";
+  for (const ComparedFigure& figure : kComparedFigures) {
+    std::snprintf(text, sizeof text, "%-28s", figure.name);
+    table += text;
+    for (const auto& run : runs) {
+      std::snprintf(text, sizeof text, " %16.7g", figure.of(run.second));
+      table += text;
+    }
+    table += std::string("  ") + figure.unit + "\n";
+  }
+  for (const std::string& failure : failures) table += "# failed, not in the table: " + failure + "\n";
   std::printf("%s", table.c_str());
-  std::ofstream((std::filesystem::path(directory) / "compare_hertz.txt").string()) << table;
+  const auto base = std::filesystem::path(directory);
+  std::ofstream((base / (file_name + ".txt")).string()) << table;
+  std::printf("  table: %s\n", (base / (file_name + ".txt")).string().c_str());
+  if (!options.no_plot) {
+    std::vector<std::string> plot{"dem-compare", (base / "pressure_thickness_compare.png").string(), "--title",
+                                  options.scenario_path, (base / "timeseries.csv").string()};
+    std::string labels = own_name;
+    for (std::size_t index = 1; index < runs.size(); ++index) {  // the laws that finished
+      plot.push_back((base / runs[index].first / "timeseries.csv").string());
+      labels += "," + runs[index].first;
+    }
+    plot.insert(plot.end(), {"--labels", labels});
+    run_python_plot(plot);
+    std::printf("  plot: %s\n", (base / "pressure_thickness_compare.png").string().c_str());
+  }
+  if (!failures.empty())
+    throw std::runtime_error("--compare: " + std::to_string(failures.size()) + " of " + std::to_string(laws.size()) +
+                             " compared laws failed (" + failures.front() + (failures.size() > 1 ? "; ..." : "") +
+                             "); " + (base / (file_name + ".txt")).string() + " holds the others");
 }
 
 // The whole of `text` as an integer, or an InputError naming the option.
@@ -316,7 +428,8 @@ void run_members(const DemOptions& options, const scenario::Scenario& loaded, co
 // limits only with --force, and never what the engine cannot represent.
 void check_plan(const DemOptions& options, const scenario::Scenario& loaded) {
   const scenario::RunPlan plan = scenario::plan_run(loaded);
-  if (!options.quiet) std::fprintf(stderr, "ellc dem: plan: %s\n", scenario::describe_plan(plan).c_str());
+  if (!options.quiet && !options.check)  // --check prints it as its result
+    std::fprintf(stderr, "ellc dem: plan: %s\n", scenario::describe_plan(plan).c_str());
   if (!plan.impossible.empty())
     throw InputError(loaded.source, plan.impossible.front() + " (refused even with --force)");
   if (plan.beyond_limits.empty()) return;
@@ -332,7 +445,14 @@ void run_dem(const DemOptions& options) {
   if (options.threads > 0) omp_set_num_threads(options.threads);
 #endif
   scenario::Scenario loaded = scenario::read_scenario(options.scenario_path);
+  const std::vector<const ComparedLaw*> laws = compared_laws(options);
   check_plan(options, loaded);
+  if (options.check) {
+    std::printf("ellc dem: %s is valid: %s\n", options.scenario_path.c_str(),
+                scenario::describe_plan(scenario::plan_run(loaded)).c_str());
+    for (const auto& warning : loaded.warnings) std::fprintf(stderr, "ellc: warning: %s\n", warning.c_str());
+    return;
+  }
   std::optional<long long> count;
   if (!options.seeds.empty())
     count = integer_option(
@@ -352,6 +472,9 @@ void run_dem(const DemOptions& options) {
       throw InputError("", "--restart", options.restart_path,
                        "no --seeds with --restart: continue one member on its own, with -o DIR/seed_<s> "
                        "--restart DIR/seed_<s>/checkpoint.bin");
+    if (!laws.empty())
+      throw InputError("", "--compare", options.compare_hertz ? "hertz" : options.compare,
+                       "no --compare with --restart: a compared law repeats the whole run from a fresh packing");
     run_single(options, std::move(loaded));
     return;
   }
@@ -361,19 +484,19 @@ void run_dem(const DemOptions& options) {
       throw InputError("", "--jobs", options.jobs,
                        "--seeds N or [packing] seeds with it: --jobs runs the members of an ensemble side by side "
                        "(-j sets the threads of one run)");
-    if (options.compare_hertz && (options.max_steps > 0 || !options.restart_path.empty()))
-      throw InputError("", "--compare-hertz", "with --max-steps or --restart",
-                       "a whole run from a fresh packing (the Hertz run repeats it)");
-    const scenario::Scenario copy = options.compare_hertz ? loaded : scenario::Scenario{};
+    if (!laws.empty() && options.max_steps > 0)
+      throw InputError("", "--compare", "with --max-steps",
+                       "a whole run from a fresh packing (each compared law repeats it)");
+    const scenario::Scenario copy = laws.empty() ? scenario::Scenario{} : loaded;
     const scenario::RunSummary law = run_single(options, std::move(loaded));
-    if (options.compare_hertz && law.finished) {
+    if (!laws.empty() && law.finished) {
       const std::string directory = options.output_directory.empty() ? copy.output.directory : options.output_directory;
-      compare_with_hertz(options, copy, law, directory);
+      compare_laws(options, copy, law, laws, directory);
     }
     return;
   }
-  if (options.compare_hertz)
-    throw InputError("", "--compare-hertz", "with an ensemble", "a single run (compare members one at a time)");
+  if (!laws.empty())
+    throw InputError("", "--compare", "with an ensemble", "a single run (compare members one at a time)");
   if (options.max_steps > 0)
     throw InputError("", "--max-steps", std::to_string(options.max_steps),
                      "no --max-steps for an ensemble (every member runs to the end of the protocol)");
@@ -404,8 +527,11 @@ const RegisterCommand registration([](CLI::App& root) {
   command->add_option(
       "--seeds", options->seeds,
       "Run an ensemble: N packing seeds from [packing] seed (seed, seed+1, ...), each in DIR/seed_<s>/");
-  command->add_flag("--compare-hertz", options->compare_hertz,
-                    "Run the same packing again with plain Hertz and compare springback and energies");
+  command->add_flag("--compare-hertz", options->compare_hertz, "The same as --compare hertz");
+  command->add_option("--compare", options->compare,
+                      "Run the same packing again with each law (hertz, thornton; comma-separated) and compare "
+                      "springback, thickness, plastic share and energies");
+  command->add_flag("--check", options->check, "Read and validate the scenario, print its plan, run nothing");
   command->add_option("--jobs", options->jobs, "Ensemble members run side by side (default 1; one engine thread each)");
   command->callback([options] { run_dem(*options); });
 });

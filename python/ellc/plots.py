@@ -11,7 +11,8 @@ matplotlib Figure, so the same figure can be made in Python from computed result
 The command line reads the CSV tables the tools write and calls these functions; the CLI runs it as
 ``python3 -m ellc.plots curve IN.csv OUT.png`` (subcommands ``curve``, ``fit PREFIX``,
 ``pressure CASE.toml OUT.png``, which needs the compiled module, ``dem IN.csv OUT.png``, and
-``dem-ensemble OUT.png CSV...`` for the members of ``ellc dem --seeds N``, drawn by
+``dem-ensemble OUT.png CSV...`` for the members of ``ellc dem --seeds N`` and
+``dem-compare OUT.png CSV... --labels LAWS`` for ``ellc dem --compare``, both drawn by
 :func:`plot_pressure_thickness_ensemble`, ``analysis DIR`` for the PNGs of ``ellc analyse`` and
 ``tortuosity-porosity OUT.png DIR...``, both drawn by :mod:`ellc.microstructure`).
 The single panels live in ellc.figures.
@@ -269,9 +270,9 @@ def plot_pressure_thickness_ensemble(members, axes=None, title=None):
     return axes
 
 
-def dem_ensemble_command(args):
-    """The members' pressure-thickness curves of `ellc dem --seeds N` in one plot; a member is
-    labelled by the folder of its CSV (seed_<seed>) unless --labels is given."""
+def _pressure_thickness_curves(args, what):
+    """One pressure-thickness plot of the CSVs in args.csv, each labelled by --labels or by its
+    folder; the title says ``what`` they are (packing seeds, laws)."""
     import pathlib
 
     labels = args.labels.split(",") if args.labels else [pathlib.Path(path).parent.name for path in args.csv]
@@ -279,12 +280,23 @@ def dem_ensemble_command(args):
         raise SystemExit(f"--labels has {len(labels)} names for {len(args.csv)} CSV files")
     members = [(label, read_columns(path)) for label, path in zip(labels, args.csv)]
     figure, axes = plt.subplots(figsize=(7.5, 5.0), dpi=110)
-    title = f"{args.title}: {len(members)} packing seeds" if args.title else f"{len(members)} packing seeds"
+    title = f"{args.title}: {what}" if args.title else what
     plot_pressure_thickness_ensemble(members, axes, title)
     figure.tight_layout()
     figure.savefig(args.png)
     plt.close(figure)
     return 0
+
+
+def dem_ensemble_command(args):
+    """The members' pressure-thickness curves of `ellc dem --seeds N` in one plot; a member is
+    labelled by the folder of its CSV (seed_<seed>) unless --labels is given."""
+    return _pressure_thickness_curves(args, f"{len(args.csv)} packing seeds")
+
+
+def dem_compare_command(args):
+    """One packing under several laws (`ellc dem --compare`), labelled by --labels (the laws)."""
+    return _pressure_thickness_curves(args, f"one packing, {len(args.csv)} laws")
 
 
 def analysis_command(args):
@@ -334,6 +346,13 @@ def main(argv=None):
     ensemble.add_argument("--labels", help="comma-separated member names (default: each CSV's folder)")
     ensemble.add_argument("--title")
     ensemble.set_defaults(run=dem_ensemble_command)
+    compare = sub.add_parser("dem-compare", help="pressure against thickness of one packing under several laws "
+                             "(`ellc dem --compare`)")
+    compare.add_argument("png")
+    compare.add_argument("csv", nargs="+", help="each law's timeseries.csv")
+    compare.add_argument("--labels", help="comma-separated law names (default: each CSV's folder)")
+    compare.add_argument("--title")
+    compare.set_defaults(run=dem_compare_command)
     analysis = sub.add_parser("analysis", help="profiles, pore sizes and force PDF of an `ellc analyse` folder")
     analysis.add_argument("directory")
     analysis.add_argument("--title")

@@ -57,3 +57,9 @@ def test_ensemble_plot_command_line(tmp_path):
     assert plots.main(["dem-ensemble", str(png), *paths, "--labels", "a,b"]) == 0
     with pytest.raises(SystemExit):
         plots.main(["dem-ensemble", str(png), *paths, "--labels", "only_one"])
+    # ellc dem --compare: one packing under several laws, the same curves labelled by law.
+    compare = tmp_path / "pressure_thickness_compare.png"
+    assert plots.main(["dem-compare", str(compare), *paths, "--labels", "becker_kamlah,hertz", "--title", "q"]) == 0
+    assert compare.stat().st_size > 10000
+    with pytest.raises(SystemExit):
+        plots.main(["dem-compare", str(compare), *paths, "--labels", "hertz"])

@@ -107,6 +107,7 @@ TEST(ScenarioValidity, LoadedStateIsTheValidityReportAtTheEndOfTheHold) {
                                              "plastic_dissipation_calendering_pJ",
                                              "narrow_phase_failures",
                                              "plate_work_pJ",
+                                             "plastic_share_of_plate_work",
                                              "gravity_work_pJ",
                                              "energy_residual_pJ",
                                              "energy_residual_fraction",

@@ -218,10 +218,11 @@ void write_summary_lines(std::ostream& out, const std::string& scenario_source, 
       << "\nfinal_porosity = " << s.final_porosity << "\nplastic_dissipation_pJ = " << s.plastic_dissipation
       << "\nplastic_dissipation_calendering_pJ = " << s.plastic_dissipation_calendering
       << "\nnarrow_phase_failures = " << s.narrow_phase_failures << "\n"
-      << "plate_work_pJ = " << s.plate_work << "\ngravity_work_pJ = " << s.gravity_work
-      << "\nenergy_residual_pJ = " << s.energy_residual << "\nenergy_residual_fraction = " << s.energy_residual_fraction
-      << "\nheld_pressure_MPa = " << s.held_pressure << "\nloaded_time_us = " << s.loaded_time
-      << "\nloaded_plate_speed_um_per_us = " << s.loaded_plate_speed << "\nreleased_time_us = " << s.released_time
+      << "plate_work_pJ = " << s.plate_work << "\nplastic_share_of_plate_work = " << s.plastic_share_of_plate_work()
+      << "\ngravity_work_pJ = " << s.gravity_work << "\nenergy_residual_pJ = " << s.energy_residual
+      << "\nenergy_residual_fraction = " << s.energy_residual_fraction << "\nheld_pressure_MPa = " << s.held_pressure
+      << "\nloaded_time_us = " << s.loaded_time << "\nloaded_plate_speed_um_per_us = " << s.loaded_plate_speed
+      << "\nreleased_time_us = " << s.released_time
       << "\nreleased_unbalanced_force_ratio = " << s.released_unbalanced_force_ratio
       << "\nreleased_pressure_MPa = " << s.released_pressure
       << "\nreleased_plate_speed_um_per_us = " << s.released_plate_speed

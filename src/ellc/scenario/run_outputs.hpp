@@ -78,6 +78,11 @@ struct RunSummary {
   double gravity_work = 0.0;
   double energy_residual = 0.0;           // work − (change of stored energy + dissipated energy)
   double energy_residual_fraction = 0.0;  // residual / work (0 when no work was done)
+  // Plastic dissipation over the plate work of the whole run (0 when no work was done): the share
+  // of the work the law's plastic flattening takes (docs/engine.md, "What the law changes").
+  [[nodiscard]] double plastic_share_of_plate_work() const noexcept {
+    return plate_work > 0.0 ? plastic_dissipation / plate_work : 0.0;
+  }
   // The loaded state, when the hold ended (diagnostics.hpp); `loaded_state_recorded` is false
   // before. The validity report counts contacts beyond c_c/r̂ = 0.16, with c_c of eq. (9) at δ_*
   // and r̂ the mean radius of the pair's smaller particle (the particle's own against a wall).
