@@ -134,6 +134,8 @@ RunSummary summarize(const Simulation& sim, const ProtocolState& protocol, doubl
   const bool done = protocol.phase == Phase::done;
   RunSummary summary;
   summary.particles = sim.particles().size();
+  summary.particles_per_species.assign(engine::species_materials(sim.settings().contact).size(), 0);
+  for (const std::uint16_t species : sim.particles().species) ++summary.particles_per_species[species];
   summary.steps = sim.step_count();
   summary.time = sim.time();
   summary.dt = sim.settings().dt;
@@ -227,6 +229,9 @@ void write_summary_lines(std::ostream& out, const std::string& scenario_source, 
       << "\nreleased_plate_speed_um_per_us = " << s.released_plate_speed
       << "\nloaded_inertial_number = " << s.loaded_inertial_number
       << "\nreleased_inertial_number = " << s.released_inertial_number << "\n";
+  if (s.particles_per_species.size() > 1)  // several species ([[species]], in their order)
+    for (std::size_t k = 0; k < s.particles_per_species.size(); ++k)
+      out << "species_" << k << "_particles = " << s.particles_per_species[k] << "\n";
   const engine::ValidityReport& v = s.loaded_validity;
   const ValidityShares& share = s.loaded_validity_shares;
   out << "# the loaded state (end of the hold); validity: c_c at delta_* (eq. 9) over r^ = the mean radius of the\n"
