@@ -76,7 +76,7 @@ TEST(ScenarioSpecies, PackingHasTheSpeciesDeterministicallyPerSeed) {
   const engine::ParticleSet again = generate_packing(scenario.packing, scenario.box, 0.0);
   EXPECT_EQ(first.species, again.species);
   EXPECT_EQ(first.position, again.position);
-  EXPECT_EQ(std::count(first.species.begin(), first.species.end(), 1), 6);  // 10 % of 60
+  EXPECT_EQ(std::count(first.species.begin(), first.species.end(), 1), 8);  // 10 % of 80
   for (std::size_t k = 0; k < first.size(); ++k) {
     const SpeciesSpec& kind = scenario.packing.species[first.species[k]];
     const Eigen::Vector3d& axes = first.semi_axes[k];
