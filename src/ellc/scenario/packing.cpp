@@ -161,8 +161,8 @@ std::vector<std::size_t> species_counts(const std::vector<SpeciesSpec>& species,
 ParticleSet generate_packing(const PackingSpec& spec, const Box& box, double floor, const OverlapTest& overlap) {
   if (!spec.file.empty()) {
     if (spec.species.empty()) return import_packing(spec.file, spec.density, box);
-    std::vector<double> densities;
-    for (const SpeciesSpec& species : spec.species) densities.push_back(species.density);
+    std::vector<double> densities(spec.species.size());
+    for (std::size_t k = 0; k < densities.size(); ++k) densities[k] = spec.species[k].density;
     return import_packing(spec.file, densities, box);
   }
   std::vector<Candidate> drawn = draw_particles(spec);

@@ -133,8 +133,6 @@ void read_walls(TableReader& table, const toml::node* material, bool contact_gav
   table.finish();
 }
 
-// [packing] file = "...": the particles of a file (packing_import.hpp), relative to the scenario;
-// only density (and seed, unused) go with it.
 // The imported packing's count, mean r̂, largest semi-axis and shape (geometry only: unit densities;
 // with several species, its atom types are checked against them).
 void measure_imported_packing(Scenario& scenario) {

@@ -15,7 +15,6 @@ using engine::EngineSettings;
 using engine::ParticleSet;
 using engine::RunawayError;
 using engine::Simulation;
-using engine::stable_time_step;
 using engine::Wall;
 
 namespace {
