@@ -229,9 +229,6 @@ void write_summary_lines(std::ostream& out, const std::string& scenario_source, 
       << "\nreleased_plate_speed_um_per_us = " << s.released_plate_speed
       << "\nloaded_inertial_number = " << s.loaded_inertial_number
       << "\nreleased_inertial_number = " << s.released_inertial_number << "\n";
-  if (s.particles_per_species.size() > 1)  // several species ([[species]], in their order)
-    for (std::size_t k = 0; k < s.particles_per_species.size(); ++k)
-      out << "species_" << k << "_particles = " << s.particles_per_species[k] << "\n";
   const engine::ValidityReport& v = s.loaded_validity;
   const ValidityShares& share = s.loaded_validity_shares;
   out << "# the loaded state (end of the hold); validity: c_c at delta_* (eq. 9) over r^ = the mean radius of the\n"
@@ -246,6 +243,11 @@ void write_summary_lines(std::ostream& out, const std::string& scenario_source, 
       << "\nloaded_wall_contacts_beyond_fraction = " << share.wall_contacts
       << "\nloaded_wall_force_beyond_fraction = " << share.wall_force
       << "\nloaded_largest_size_ratio = " << v.largest_ratio << "\n";
+  if (s.particles_per_species.size() > 1) {  // several species ([[species]], in their order)
+    out << "# particles of each species ([[species]] in their order)\n";
+    for (std::size_t k = 0; k < s.particles_per_species.size(); ++k)
+      out << "species_" << k << "_particles = " << s.particles_per_species[k] << "\n";
+  }
 }
 
 }  // namespace ellc::scenario
