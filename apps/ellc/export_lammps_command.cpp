@@ -62,15 +62,18 @@ void write_data_file(const std::string& path, const scenario::Scenario& scenario
   out.precision(17);
   out << "LAMMPS data file: the packing of " << std::filesystem::path(scenario.source).filename().string() << " (seed "
       << scenario.packing.seed << "), written by ellc export-lammps; units micro\n\n";
-  out << particles.size() << " atoms\n1 atom types\n" << particles.size() << " ellipsoids\n\n";
+  // Several species ([[species]]): atom type k + 1 is species k, with its own density.
+  const std::vector<scenario::SpeciesSpec> species = scenario::species_of(scenario.packing);
+  out << particles.size() << " atoms\n" << species.size() << " atom types\n" << particles.size() << " ellipsoids\n\n";
   out << "0 " << scenario.box.lx << " xlo xhi\n0 " << scenario.box.ly << " ylo yhi\n"
       << zlo << ' ' << zhi << " zlo zhi\n\n";
   // atom-ID atom-type ellipsoidflag density x y z (density in pg/µm³, after mass scaling)
   out << "Atoms # ellipsoid\n\n";
   for (std::size_t k = 0; k < particles.size(); ++k) {
     const Eigen::Vector3d& x = particles.position[k];
-    out << particles.id[k] + 1 << " 1 1 " << scenario.packing.density * kPerMilli << ' ' << x.x() << ' ' << x.y() << ' '
-        << x.z() << '\n';
+    const std::uint16_t kind = particles.species[k];
+    out << particles.id[k] + 1 << ' ' << kind + 1 << " 1 " << species[kind].density * kPerMilli << ' ' << x.x() << ' '
+        << x.y() << ' ' << x.z() << '\n';
   }
   // atom-ID shapex shapey shapez quatw quati quatj quatk (shape: diameters; quaternion body → world)
   out << "\nEllipsoids\n\n";
@@ -82,21 +85,28 @@ void write_data_file(const std::string& path, const scenario::Scenario& scenario
   }
 }
 
-std::string pair_coeff_line(const scenario::Scenario& scenario) {
-  const Material& m = scenario.contact.material;
+// One line per species (pair_coeff k k, its material): the pair style mixes two types by the
+// same make_interaction as the built-in engine (eq. 3, Y = min), with the one [model] of the scenario.
+std::string pair_coeff_lines(const scenario::Scenario& scenario) {
+  const std::vector<Material> materials = engine::species_materials(scenario.contact);
   const ContactModel& model = scenario.contact.model;
   const auto& fit = model.law.fit;
   std::ostringstream line;
-  line << "pair_coeff   1 1 " << number(m.youngs_modulus * kPerMilli) << ' ' << number(m.poisson_ratio) << ' '
-       << number(m.yield_stress * kPerMilli) << " &\n  normal " << name_of(model.normal) << " damping_model "
-       << name_of(model.damping) << " normal_damping " << number(model.normal_damping) << " tangential_damping "
-       << number(model.tangential_damping) << " &\n  tangential_model " << name_of(model.tangential)
-       << " tangential_stiffness " << number(model.tangential_stiffness_ratio) << " friction " << number(model.friction)
-       << " narrow_phase_final_step " << number(model.narrow_phase_final_step) << " &\n  lambda "
-       << number(fit.lambda_amplitude) << ' ' << number(fit.lambda_rate) << ' ' << number(fit.lambda_offset)
-       << " epsilon " << number(fit.epsilon_amplitude) << ' ' << number(fit.epsilon_rate) << ' '
-       << number(fit.epsilon_offset) << " exponent " << number(fit.transition_exponent) << " yield_factor "
-       << number(model.law.yield_pressure_factor) << '\n';
+  for (std::size_t k = 0; k < materials.size(); ++k) {
+    const Material& m = materials[k];
+    const std::string type = std::to_string(k + 1);
+    line << "pair_coeff   " << type << ' ' << type << ' ' << number(m.youngs_modulus * kPerMilli) << ' '
+         << number(m.poisson_ratio) << ' ' << number(m.yield_stress * kPerMilli) << " &\n  normal "
+         << name_of(model.normal) << " damping_model " << name_of(model.damping) << " normal_damping "
+         << number(model.normal_damping) << " tangential_damping " << number(model.tangential_damping)
+         << " &\n  tangential_model " << name_of(model.tangential) << " tangential_stiffness "
+         << number(model.tangential_stiffness_ratio) << " friction " << number(model.friction)
+         << " narrow_phase_final_step " << number(model.narrow_phase_final_step) << " &\n  lambda "
+         << number(fit.lambda_amplitude) << ' ' << number(fit.lambda_rate) << ' ' << number(fit.lambda_offset)
+         << " epsilon " << number(fit.epsilon_amplitude) << ' ' << number(fit.epsilon_rate) << ' '
+         << number(fit.epsilon_offset) << " exponent " << number(fit.transition_exponent) << " yield_factor "
+         << number(model.law.yield_pressure_factor) << '\n';
+  }
   return line.str();
 }
 
@@ -140,7 +150,7 @@ void write_input(const std::string& path, const std::string& data_name, const sc
       << "read_data    " << data_name << "\n\n";
   out << "pair_style   ellipsoid/bk hertz " << (scenario.contact.model.hertz == HertzMode::exact ? "exact" : "hale")
       << '\n'
-      << pair_coeff_line(scenario);
+      << pair_coeff_lines(scenario);
   out << "timestep     " << number(dt) << "   # µs: " << number(scenario.time_step_safety)
       << " x Rayleigh time of the smallest semi-axis, as ellc dem\n";
   out << "neighbor     " << number(scenario.skin > 0.0 ? scenario.skin : 0.2 * scenario.packing.mean_radius)
@@ -337,8 +347,7 @@ void run_export(const ExportOptions& options) {
   // The packing `ellc dem` builds (ScenarioRunner::build_packing): same generator, seed and test.
   const engine::ParticleSet particles = scenario::generate_packing(
       spec, scenario.box, 0.0, spec.spheres ? scenario::OverlapTest{} : scenario::ellipsoid_overlap_test());
-  const double dt = scenario.dt.value_or(
-      engine::stable_time_step(particles, spec.density, scenario.contact.material, scenario.time_step_safety));
+  const double dt = scenario.dt.value_or(scenario::packing_time_step(particles, scenario));
   double top = 0.0;        // highest bounding sphere (where the engine puts the plate to settle)
   double layer_top = 0.0;  // highest surface point (where the load starts without settling)
   for (std::size_t k = 0; k < particles.size(); ++k) {

@@ -163,7 +163,7 @@ TEST(Checkpoint, ImpossibleContentIsRefusedWithTheReason) {
   EXPECT_NE(message.find("appears twice"), std::string::npos) << message;
 
   // dt: the tenth field of the simulation's state (after its tag and eight counters).
-  const std::string state_tag = bytes_of(std::uint64_t{0x454c4c43'44454d32ULL});
+  const std::string state_tag = bytes_of(std::uint64_t{0x454c4c43'44454d33ULL});
   const auto state = written.bytes.find(state_tag);
   ASSERT_NE(state, std::string::npos);
   const double dt = written.runner->simulation().settings().dt;
@@ -176,6 +176,35 @@ TEST(Checkpoint, ImpossibleContentIsRefusedWithTheReason) {
   message = written.error_reading(edited(written.bytes, bytes_of(pair.key) + bytes_of(pair.i) + bytes_of(pair.j),
                                          bytes_of(pair.key) + bytes_of(missing)));
   EXPECT_NE(message.find("refers to particle slots"), std::string::npos) << message;
+}
+
+// The species array (after the torques): a species the scenario does not have is refused; a
+// state of the format before species (tag ELLCDEM2, no species array) loads as one species.
+TEST(Checkpoint, SpeciesAreCheckedAndOldStatesLoadAsOneSpecies) {
+  const Written written;
+  const engine::ParticleSet& particles = written.runner->simulation().particles();
+  const std::size_t n = particles.size();
+  // The whole torque array (its count, then every torque) anchors the species array behind it; the
+  // last match (before contacts, the force array is all zeros like the torques and matches too).
+  std::string torques = bytes_of(std::uint64_t{n});
+  for (const Eigen::Vector3d& torque : particles.torque) torques += bytes_of(torque);
+  const std::string species = torques + bytes_of(std::uint64_t{n}) + std::string(2 * n, '\0');
+  const auto at = written.bytes.rfind(species);
+  ASSERT_NE(at, std::string::npos);
+  std::string unknown = species;
+  unknown[unknown.size() - 2] = 1;  // the last particle of species 1, in a one-species scenario
+  std::string message = written.error_reading(edited(written.bytes, species, unknown, at));
+  EXPECT_NE(message.find("is of species 1"), std::string::npos) << message;
+
+  std::string old = written.bytes;
+  old.erase(at + torques.size(), 8 + 2 * n);
+  const std::string tag = bytes_of(std::uint64_t{0x454c4c43'44454d33ULL});
+  const std::uint64_t payload = old.size() - kCheckpointHeaderSize;
+  std::memcpy(old.data() + 16, &payload, sizeof payload);
+  old = edited(old, tag, bytes_of(std::uint64_t{0x454c4c43'44454d32ULL}));
+  const Checkpoint loaded = parse_checkpoint(old, "old.bin", written.scenario, engine::EngineSettings{});
+  EXPECT_EQ(loaded.simulation->particles().species, std::vector<std::uint16_t>(n, 0));
+  EXPECT_EQ(loaded.simulation->particles().position, particles.position);
 }
 
 // A refused restart leaves the output directory as it was: nothing is opened for writing before

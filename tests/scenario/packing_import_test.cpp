@@ -48,6 +48,27 @@ TEST(PackingImport, CsvGivesTheParticlesItDescribes) {
   EXPECT_NEAR(particles.orientation[1].x(), 0.8, 1e-15);
 }
 
+// Several species: atom type t is species t − 1, of its density; a type beyond them is refused.
+TEST(PackingImport, DataFileTypesAreTheSpecies) {
+  const std::string text =
+      "title\n\n2 atoms\n2 atom types\n2 ellipsoids\n\n0 30 xlo xhi\n0 20 ylo yhi\n-8 40 zlo zhi\n\n"
+      "Atoms # ellipsoid\n\n1 2 1 4.7 5.0 5.0 9.0\n2 1 1 4.7 15.0 5.0 9.0\n\n"
+      "Ellipsoids\n\n1 4.0 4.0 4.0 1 0 0 0\n2 4.0 4.0 4.0 1 0 0 0\n";
+  const engine::ParticleSet particles = import_packing(write_file("types.data", text), {1.0, 3.0}, kBox);
+  ASSERT_EQ(particles.size(), 2U);
+  EXPECT_EQ(particles.species, (std::vector<std::uint16_t>{1, 0}));
+  EXPECT_DOUBLE_EQ(particles.mass[0], 3.0 * 4.0 / 3.0 * std::numbers::pi * 8.0);
+  EXPECT_DOUBLE_EQ(particles.mass[1], 1.0 * 4.0 / 3.0 * std::numbers::pi * 8.0);
+  // One species: the types are not used (every particle species 0).
+  EXPECT_EQ(import_packing(write_file("types1.data", text), 1.0, kBox).species, (std::vector<std::uint16_t>{0, 0}));
+  std::string bad = text;
+  bad.replace(bad.find("1 2 1 4.7"), 9, "1 3 1 4.7");
+  const std::string message = test::input_error_message([&] {
+    (void)import_packing(write_file("types3.data", bad), {1.0, 3.0}, kBox);
+  });
+  EXPECT_NE(message.find("atom type = 3"), std::string::npos) << message;
+}
+
 TEST(PackingImport, DataFileGivesTheParticlesItDescribes) {
   // Atom IDs out of order, an x/y box starting at −10 and image flags, shapes as diameters.
   const std::string path = write_file("ok.data",

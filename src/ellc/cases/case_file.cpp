@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <numbers>
+#include <utility>
 
 #include "ellc/geometry/tip_contact.hpp"
 #include "ellc/io/input_error.hpp"
@@ -117,6 +118,34 @@ ModelSpec read_model(TableReader& table) {
   table.finish();
   if (const std::string error = validation_error(model.law); !error.empty()) throw InputError(table.source(), error);
   return model;
+}
+
+std::vector<ModelDifference> model_differences(const ModelSpec& first, const ModelSpec& second) {
+  std::vector<ModelDifference> differences;
+  const auto name = [](HertzMode mode) { return std::string(mode == HertzMode::exact ? "\"exact\"" : "\"hale\""); };
+  const auto form = [](TransitionForm f) {
+    return std::string(f == TransitionForm::stiffness_ratio ? "\"stiffness_ratio\"" : "\"paper\"");
+  };
+  if (first.hertz != second.hertz) differences.push_back({"hertz", name(first.hertz), name(second.hertz)});
+  const TransitionFit& a = first.law.fit;
+  const TransitionFit& b = second.law.fit;
+  const std::pair<const char*, std::pair<double, double>> numbers[] = {
+      {"m", {a.lambda_amplitude, b.lambda_amplitude}},
+      {"o", {a.lambda_rate, b.lambda_rate}},
+      {"p", {a.lambda_offset, b.lambda_offset}},
+      {"s", {a.epsilon_amplitude, b.epsilon_amplitude}},
+      {"t", {a.epsilon_rate, b.epsilon_rate}},
+      {"u", {a.epsilon_offset, b.epsilon_offset}},
+      {"n", {a.transition_exponent, b.transition_exponent}},
+      {"yield_pressure_factor", {first.law.yield_pressure_factor, second.law.yield_pressure_factor}},
+      {"lambda_stiffness_exponent", {a.lambda_stiffness_exponent, b.lambda_stiffness_exponent}},
+      {"epsilon_stiffness_exponent", {a.epsilon_stiffness_exponent, b.epsilon_stiffness_exponent}},
+      {"reference_stiffness_ratio", {a.reference_stiffness_ratio, b.reference_stiffness_ratio}}};
+  if (a.form != b.form) differences.push_back({"form", form(a.form), form(b.form)});
+  for (const auto& [key, values] : numbers)
+    if (values.first != values.second)
+      differences.push_back({key, format_number(values.first), format_number(values.second)});
+  return differences;
 }
 
 BodyPair read_body_pair(TableReader& root, std::vector<std::string>& warnings) {

@@ -45,6 +45,15 @@ struct CurveCase {
                                  std::vector<std::string>& warnings);
 [[nodiscard]] ModelSpec read_model(TableReader& table);
 
+// A key of [model] on which two model specs differ, with both values as text (the keys and their
+// order are read_model's).
+struct ModelDifference {
+  std::string key;
+  std::string first;
+  std::string second;
+};
+[[nodiscard]] std::vector<ModelDifference> model_differences(const ModelSpec& first, const ModelSpec& second);
+
 // [material] (optional when each body has its own), [body_I] and [body_J] of a case's root table.
 struct BodyPair {
   BodySpec body_i;

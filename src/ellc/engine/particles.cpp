@@ -10,7 +10,7 @@ namespace ellc::engine {
 double ellipsoid_volume(const Eigen::Vector3d& axes) noexcept { return 4.0 / 3.0 * std::numbers::pi * axes.prod(); }
 
 void ParticleSet::add(std::uint32_t particle_id, const Eigen::Vector3d& axes, double density,
-                      const Eigen::Vector3d& centre, const Eigen::Quaterniond& rotation) {
+                      const Eigen::Vector3d& centre, const Eigen::Quaterniond& rotation, std::uint16_t species_index) {
   const double m = density * ellipsoid_volume(axes);
   id.push_back(particle_id);
   semi_axes.push_back(axes);
@@ -24,6 +24,7 @@ void ParticleSet::add(std::uint32_t particle_id, const Eigen::Vector3d& axes, do
   angular_velocity.emplace_back(Eigen::Vector3d::Zero());
   force.emplace_back(Eigen::Vector3d::Zero());
   torque.emplace_back(Eigen::Vector3d::Zero());
+  species.push_back(species_index);
 }
 
 bool ParticleSet::all_spheres() const noexcept {

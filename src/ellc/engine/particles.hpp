@@ -26,11 +26,14 @@ struct ParticleSet {
   std::vector<Eigen::Vector3d> angular_velocity;  // body frame (Euler's equations)
   std::vector<Eigen::Vector3d> force;             // world frame, contacts only
   std::vector<Eigen::Vector3d> torque;            // world frame
+  // The particle's species: an index into ContactSettings::species (settings.hpp), 0 in a
+  // one-species packing. The per-pair contact constants are looked up by it, not stored here.
+  std::vector<std::uint16_t> species;
 
   [[nodiscard]] std::size_t size() const noexcept { return id.size(); }
   // Appends a particle at rest; mass and inertia follow from the density (ng/µm³).
   void add(std::uint32_t particle_id, const Eigen::Vector3d& axes, double density, const Eigen::Vector3d& centre,
-           const Eigen::Quaterniond& rotation);
+           const Eigen::Quaterniond& rotation, std::uint16_t species_index = 0);
   // True when every particle is a sphere (a = b = c): the engine then takes the sphere path.
   [[nodiscard]] bool all_spheres() const noexcept;
   [[nodiscard]] double total_volume() const noexcept;

@@ -7,6 +7,7 @@
 #include <array>
 #include <cstddef>
 #include <optional>
+#include <vector>
 
 #include "ellc/contact/contact_model.hpp"
 #include "ellc/material/material.hpp"
@@ -26,13 +27,22 @@ namespace ellc::engine {
 }
 
 struct ContactSettings {
-  Material material;                               // the particles
+  Material material;  // the particles' (one species), or species 0's when `species` is given
+  // Several species (docs/engine.md, "Several species"): the material of each, indexed by
+  // ParticleSet::species; empty: one species of `material`. A pair of species k, l mixes the two
+  // by eq. (3) and Y = min (make_interaction); the walls meet each species' own material.
+  std::vector<Material> species;
   ContactModel model = engine_contact_defaults();  // particle–particle contacts
   double wall_friction = 0.3;                      // μ against the walls; otherwise the walls use `model`
   // The walls' material: rigid_material(), an elastic (or elastic–plastic) plate, or, when empty,
   // the particles' own material (a mirror-image half-space, the behaviour of earlier versions).
   std::optional<Material> wall_material;
 };
+
+// The material of each species: `species`, or {material} for one species.
+[[nodiscard]] inline std::vector<Material> species_materials(const ContactSettings& contact) {
+  return contact.species.empty() ? std::vector<Material>{contact.material} : contact.species;
+}
 
 // Periodic in x and y over [0, lx) × [0, ly); walls bound z.
 struct Box {

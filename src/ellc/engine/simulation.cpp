@@ -61,11 +61,17 @@ Simulation::Simulation(const EngineSettings& settings, ParticleSet particles, co
     : settings_(settings), particles_(std::move(particles)), walls_(walls) {
   choose_threads();
   const ContactSettings& contact = settings_.contact;
-  pair_context_ = make_interaction(contact.model, contact.material, contact.material);
+  const std::vector<Material> materials = species_materials(contact);
+  species_count_ = materials.size();
   ContactModel wall_model = contact.model;
   wall_model.friction = contact.wall_friction;
-  wall_context_ = make_interaction(wall_model, contact.material, contact.wall_material.value_or(contact.material));
+  for (const Material& body_i : materials) {
+    for (const Material& body_j : materials) pair_contexts_.push_back(make_interaction(contact.model, body_i, body_j));
+    wall_contexts_.push_back(make_interaction(wall_model, body_i, contact.wall_material.value_or(body_i)));
+  }
   const std::size_t count = particles_.size();
+  if (particles_.species.empty()) particles_.species.assign(count, 0);  // one species
+  check_species();
   prepare_derived_arrays();
   for (int wall = 0; wall < 2; ++wall) {
     wall_history_[wall].assign(count, WallContact{});
@@ -76,6 +82,19 @@ Simulation::Simulation(const EngineSettings& settings, ParticleSet particles, co
   rebuild_neighbours();
   refresh_body_frames();
   compute_forces();
+}
+
+void Simulation::check_species() const {
+  const auto& species = particles_.species;
+  if (species.size() != particles_.size())
+    throw std::invalid_argument("particle species: " + std::to_string(species.size()) + " entries for " +
+                                std::to_string(particles_.size()) + " particles");
+  for (std::size_t slot = 0; slot < species.size(); ++slot)
+    if (species[slot] >= species_count_)
+      throw std::invalid_argument("particle " + std::to_string(particles_.id[slot]) + " is of species " +
+                                  std::to_string(species[slot]) + ", but the settings give " +
+                                  std::to_string(species_count_) + " species (0 .. " +
+                                  std::to_string(species_count_ - 1) + ")");
 }
 
 void Simulation::prepare_derived_arrays() {
@@ -275,8 +294,8 @@ void Simulation::evaluate_walls_and_reset(std::size_t slot) {
     PairSolution solution;
     if (reach > 0.0) {
       const BodyRef body{p.semi_axes[slot], p.position[slot], p.orientation[slot], p.mean_radius[slot], shape};
-      solution =
-          solve_wall(body, WallPlane{wall.position, wall.side}, is_sphere_[slot] != 0, history, cache, wall_context_);
+      solution = solve_wall(body, WallPlane{wall.position, wall.side}, is_sphere_[slot] != 0, history, cache,
+                            wall_context(slot));
     }
     if (solution.status == PairStatus::failed) {
       result.failed = true;
@@ -294,7 +313,7 @@ void Simulation::evaluate_walls_and_reset(std::size_t slot) {
       continue;
     }
     const WallForces on_wall =
-        wall_forces(solution, p.position[slot], motion, wall.velocity, wall_context_, settings_.dt, history);
+        wall_forces(solution, p.position[slot], motion, wall.velocity, wall_context(slot), settings_.dt, history);
     force -= on_wall.contact.on_j;
     torque -= on_wall.lever_cross_force;
     result.force_on_wall = on_wall.contact.on_j;
@@ -329,7 +348,7 @@ void Simulation::evaluate_pair(std::size_t index) {
                          is_sphere_[i] == 0 ? &shapes_[i] : nullptr};
     const BodyRef body_j{p.semi_axes[j], centre_j, p.orientation[j], p.mean_radius[j],
                          is_sphere_[j] == 0 ? &shapes_[j] : nullptr};
-    solution = solve_pair(body_i, body_j, is_sphere_[i] != 0 && is_sphere_[j] != 0, history, cache, pair_context_);
+    solution = solve_pair(body_i, body_j, is_sphere_[i] != 0 && is_sphere_[j] != 0, history, cache, pair_context(i, j));
   } else {
     solution.clearance = std::sqrt(distance_sq) - reach;  // bounding spheres apart
   }
@@ -362,7 +381,7 @@ void Simulation::evaluate_pair(std::size_t index) {
   if (solution.law.regime == Regime::separated) return;  // overlapping below δ_p: no force
   const PairForces forces =
       pair_forces(solution, p.position[i], BodyMotion{p.velocity[i], omega_world_[i], p.mass[i]}, centre_j,
-                  BodyMotion{p.velocity[j], omega_world_[j], p.mass[j]}, pair_context_, settings_.dt, history);
+                  BodyMotion{p.velocity[j], omega_world_[j], p.mass[j]}, pair_context(i, j), settings_.dt, history);
   result.force_on_j = forces.contact.on_j;
   result.torque_i = forces.torque_on_i;
   result.torque_j = forces.torque_on_j;

@@ -207,8 +207,18 @@ class Simulation {
   EngineSettings settings_;
   ParticleSet particles_;
   std::array<Wall, 2> walls_;
-  InteractionContext pair_context_;  // particle–particle contacts
-  InteractionContext wall_context_;  // particle–wall contacts (the walls' friction)
+  // One context per pair of species (S × S, row-major, symmetric) and per species on the walls:
+  // the per-pair constants are looked up by the particles' species, never stored per particle.
+  [[nodiscard]] const InteractionContext& pair_context(std::size_t i, std::size_t j) const noexcept {
+    return pair_contexts_[particles_.species[i] * species_count_ + particles_.species[j]];
+  }
+  [[nodiscard]] const InteractionContext& wall_context(std::size_t slot) const noexcept {
+    return wall_contexts_[particles_.species[slot]];
+  }
+  void check_species() const;  // every particle's species names a material of the settings
+  std::size_t species_count_ = 1;
+  std::vector<InteractionContext> pair_contexts_;  // particle–particle contacts
+  std::vector<InteractionContext> wall_contexts_;  // particle–wall contacts (the walls' friction)
   std::vector<char> is_sphere_;
   std::vector<Eigen::Vector3d> omega_world_;
   std::vector<Ellipsoid> shapes_;                    // posed ellipsoids of this step (non-spheres only)

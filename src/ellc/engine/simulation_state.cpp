@@ -8,6 +8,7 @@
 #include <cmath>
 #include <istream>
 #include <ostream>
+#include <stdexcept>
 #include <string>
 #include <type_traits>
 
@@ -40,6 +41,7 @@ struct Counter {
 
 struct Reader {
   std::istream& in;
+  bool species = true;  // false: a state from before species (ELLCDEM2), every particle species 0
   template <typename T>
   void operator()(T& value) {
     binary::get(in, value);
@@ -70,7 +72,9 @@ void pair_fields(Io&& io, Pair& pair) {
   history_fields(io, pair.history, pair.cache);
 }
 
-constexpr std::uint64_t kStateTag = 0x454c4c43'44454d32ULL;  // "ELLCDEM2": the shared history record (was 1)
+constexpr std::uint64_t kStateTag = 0x454c4c43'44454d33ULL;  // "ELLCDEM3": with each particle's species
+// "ELLCDEM2" (the shared history record, before species): read as one species, every particle 0.
+constexpr std::uint64_t kStateTagOneSpecies = 0x454c4c43'44454d32ULL;
 
 [[noreturn]] void corrupt(const std::string& what) { throw std::runtime_error("checkpoint is corrupt: " + what); }
 
@@ -120,7 +124,7 @@ void validate_state(const ParticleSet& p, const std::vector<PairSlot>& pairs,
   for (const std::size_t size :
        {p.semi_axes.size(), p.mass.size(), p.inertia.size(), p.mean_radius.size(), p.bounding_radius.size(),
         p.position.size(), p.orientation.size(), p.velocity.size(), p.angular_velocity.size(), p.force.size(),
-        p.torque.size(), wall_history[0].size(), wall_history[1].size()})
+        p.torque.size(), p.species.size(), wall_history[0].size(), wall_history[1].size()})
     if (size != n)
       corrupt("a particle array holds " + std::to_string(size) + " entries for " + std::to_string(n) + " particles");
   std::vector<std::uint32_t> ids = p.id;
@@ -225,6 +229,14 @@ void Simulation::state_fields(Io& io, Self& self) {
   io(p.angular_velocity);
   io(p.force);
   io(p.torque);
+  if constexpr (std::is_same_v<Io, Reader>) {
+    if (io.species)
+      io(p.species);
+    else
+      p.species.assign(p.id.size(), 0);
+  } else {
+    io(p.species);
+  }
   io(self.reference_position_);
   io(self.pairs_);
   for (auto& histories : self.wall_history_) io(histories);
@@ -296,8 +308,14 @@ void Simulation::read_state(std::istream& in) {
   Reader reader{in};
   std::uint64_t tag = 0;
   reader(tag);
-  if (tag != kStateTag) corrupt("the simulation state does not start with its tag");
+  if (tag != kStateTag && tag != kStateTagOneSpecies) corrupt("the simulation state does not start with its tag");
+  reader.species = tag == kStateTag;
   state_fields(reader, *this);
+  try {
+    check_species();
+  } catch (const std::invalid_argument& error) {
+    corrupt(error.what());
+  }
   prepare_derived_arrays();
 }
 

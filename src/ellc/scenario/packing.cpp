@@ -21,24 +21,47 @@ using engine::ParticleSet;
 namespace {
 
 struct Candidate {
+  std::uint16_t species = 0;
   Eigen::Vector3d axes;
   Eigen::Quaterniond rotation;
   Eigen::Vector3d centre = Eigen::Vector3d::Zero();
   double bounding = 0.0;
 };
 
+// Species 0, 1, … in the counts of species_counts(), shuffled (Fisher–Yates) with their own
+// stream of the seed; all 0 without drawing for one species.
+std::vector<std::uint16_t> draw_species(const std::vector<SpeciesSpec>& species, std::size_t count,
+                                        std::uint64_t seed) {
+  std::vector<std::uint16_t> drawn;
+  drawn.reserve(count);
+  const std::vector<std::size_t> counts = species_counts(species, count);
+  for (std::size_t k = 0; k < counts.size(); ++k) drawn.insert(drawn.end(), counts[k], static_cast<std::uint16_t>(k));
+  if (species.size() < 2) return drawn;
+  Random random(seed ^ 0x5bec1e55'5bec1e55ULL);
+  for (std::size_t k = drawn.size(); k > 1; --k) {
+    const auto pick = std::min(k - 1, static_cast<std::size_t>(random.uniform() * static_cast<double>(k)));
+    std::swap(drawn[k - 1], drawn[pick]);
+  }
+  return drawn;
+}
+
 std::vector<Candidate> draw_particles(const PackingSpec& spec) {
+  const std::vector<SpeciesSpec> species = species_of(spec);
+  const std::vector<std::uint16_t> species_index = draw_species(species, spec.count, spec.seed);
   Random random(spec.seed);
   std::vector<Candidate> drawn(spec.count);
-  const double log_low = std::log(spec.aspect_min);
-  const double log_high = std::log(spec.aspect_max);
-  for (auto& particle : drawn) {
+  for (std::size_t index = 0; index < drawn.size(); ++index) {
+    Candidate& particle = drawn[index];
+    particle.species = species_index[index];
+    const SpeciesSpec& kind = species[particle.species];
     double deviation = random.normal();
     deviation = std::clamp(deviation, -2.0, 2.0);
-    const double radius = spec.mean_radius * std::max(0.05, 1.0 + spec.radius_spread * deviation);
-    if (spec.spheres) {
+    const double radius = kind.mean_radius * std::max(0.05, 1.0 + kind.radius_spread * deviation);
+    if (kind.spheres) {
       particle.axes.setConstant(radius);
     } else {
+      const double log_low = std::log(kind.aspect_min);
+      const double log_high = std::log(kind.aspect_max);
       const Eigen::Vector3d ratios(1.0, std::exp(random.uniform(log_low, log_high)),
                                    std::exp(random.uniform(log_low, log_high)));
       particle.axes = ratios * (radius / std::cbrt(ratios.prod()));  // (abc)^{1/3} = r̂
@@ -100,9 +123,50 @@ class InsertionGrid {
 
 }  // namespace
 
+std::vector<SpeciesSpec> species_of(const PackingSpec& spec) {
+  if (!spec.species.empty()) return spec.species;
+  SpeciesSpec one;
+  one.mean_radius = spec.mean_radius;
+  one.radius_spread = spec.radius_spread;
+  one.aspect_min = spec.aspect_min;
+  one.aspect_max = spec.aspect_max;
+  one.spheres = spec.spheres;
+  one.density = spec.density;
+  return {one};
+}
+
+std::vector<std::size_t> species_counts(const std::vector<SpeciesSpec>& species, std::size_t count) {
+  std::vector<std::size_t> counts(species.size(), 0);
+  if (species.empty()) return counts;
+  std::vector<double> remainder(species.size(), 0.0);
+  std::size_t given = 0;
+  for (std::size_t k = 0; k < species.size(); ++k) {
+    const double share = species[k].fraction * static_cast<double>(count);
+    counts[k] = static_cast<std::size_t>(std::floor(share));
+    remainder[k] = share - static_cast<double>(counts[k]);
+    given += counts[k];
+  }
+  std::vector<std::size_t> order(species.size());
+  std::iota(order.begin(), order.end(), std::size_t{0});
+  std::stable_sort(order.begin(), order.end(),
+                   [&](std::size_t l, std::size_t r) { return remainder[l] > remainder[r]; });
+  for (std::size_t k = 0; given < count; k = (k + 1) % order.size(), ++given) ++counts[order[k]];
+  while (given > count) {  // fractions summing a rounding above 1
+    for (std::size_t k = species.size(); k-- > 0 && given > count;)
+      if (counts[k] > 0) --counts[k], --given;
+  }
+  return counts;
+}
+
 ParticleSet generate_packing(const PackingSpec& spec, const Box& box, double floor, const OverlapTest& overlap) {
-  if (!spec.file.empty()) return import_packing(spec.file, spec.density, box);
+  if (!spec.file.empty()) {
+    if (spec.species.empty()) return import_packing(spec.file, spec.density, box);
+    std::vector<double> densities(spec.species.size());
+    for (std::size_t k = 0; k < densities.size(); ++k) densities[k] = spec.species[k].density;
+    return import_packing(spec.file, densities, box);
+  }
   std::vector<Candidate> drawn = draw_particles(spec);
+  const std::vector<SpeciesSpec> species = species_of(spec);
   ParticleSet particles;
   if (drawn.empty()) return particles;
   Random random(spec.seed ^ 0x5eed5eed5eed5eedULL);
@@ -160,7 +224,8 @@ ParticleSet generate_packing(const PackingSpec& spec, const Box& box, double flo
                    [&](std::size_t l, std::size_t r) { return cell(drawn[l]) < cell(drawn[r]); });
   for (std::size_t rank = 0; rank < spatial.size(); ++rank) {
     const Candidate& particle = drawn[spatial[rank]];
-    particles.add(static_cast<std::uint32_t>(rank), particle.axes, spec.density, particle.centre, particle.rotation);
+    particles.add(static_cast<std::uint32_t>(rank), particle.axes, species[particle.species].density, particle.centre,
+                  particle.rotation, particle.species);
   }
   return particles;
 }

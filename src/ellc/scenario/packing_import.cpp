@@ -118,7 +118,10 @@ engine::ParticleSet read_csv(const std::string& path, std::istream& in, double d
   return particles;
 }
 
-engine::ParticleSet read_data(const std::string& path, std::istream& in, double density, const engine::Box& box) {
+// densities: one per species; with several, atom type t is species t − 1 (one: types are not used).
+engine::ParticleSet read_data(const std::string& path, std::istream& in, const std::vector<double>& densities,
+                              const engine::Box& box) {
+  std::map<long, long> type_of;  // atom ID → its type
   long atoms = -1;
   std::optional<double> xlo, xhi, ylo, yhi;
   std::map<long, Body> bodies;
@@ -174,6 +177,13 @@ engine::ParticleSet read_data(const std::string& path, std::istream& in, double 
                                        to_number(path, line_number, "iy", words[8]) * (*yhi - *ylo), 0.0);
       body.has_centre = true;
       line_of[id] = line_number;
+      const double type = to_number(path, line_number, "atom type", words[1]);
+      if (densities.size() > 1 &&
+          !(type >= 1.0 && type <= static_cast<double>(densities.size()) && type == std::round(type)))
+        throw InputError(path, field(line_number, "atom type"), words[1],
+                         "an atom type in 1.." + std::to_string(densities.size()) +
+                             ": the scenario's [[species]] in their order (type 1 = species[0])");
+      type_of[id] = std::lround(type);
       if (to_number(path, line_number, "ellipsoidflag", words[2]) != 1.0)
         throw InputError(path, field(line_number, "ellipsoidflag"), words[2],
                          "1: every particle an ellipsoid with a line in the Ellipsoids section");
@@ -213,7 +223,9 @@ engine::ParticleSet read_data(const std::string& path, std::istream& in, double 
     body.centre.x() -= *xlo;
     body.centre.y() -= *ylo;
     finish(path, line, body, box);
-    particles.add(static_cast<std::uint32_t>(particles.size()), body.axes, density, body.centre, body.rotation);
+    const auto species = static_cast<std::uint16_t>(densities.size() > 1 ? type_of[id] - 1 : 0);
+    particles.add(static_cast<std::uint32_t>(particles.size()), body.axes, densities[species], body.centre,
+                  body.rotation, species);
   }
   return particles;
 }
@@ -221,10 +233,19 @@ engine::ParticleSet read_data(const std::string& path, std::istream& in, double 
 }  // namespace
 
 engine::ParticleSet import_packing(const std::string& path, double density, const engine::Box& box) {
+  return import_packing(path, std::vector<double>{density}, box);
+}
+
+engine::ParticleSet import_packing(const std::string& path, const std::vector<double>& species_densities,
+                                   const engine::Box& box) {
   std::ifstream in(path);
   if (!in) throw InputError(path, "cannot open the packing file for reading");
   const bool csv = path.size() >= 4 && path.compare(path.size() - 4, 4, ".csv") == 0;
-  return csv ? read_csv(path, in, density, box) : read_data(path, in, density, box);
+  if (csv && species_densities.size() > 1)
+    throw InputError(path,
+                     "a CSV packing with several [[species]]: expected a LAMMPS data file, whose atom types are "
+                     "the species");
+  return csv ? read_csv(path, in, species_densities.front(), box) : read_data(path, in, species_densities, box);
 }
 
 }  // namespace ellc::scenario

@@ -18,6 +18,7 @@
 // naming the file, the line and the field.
 
 #include <string>
+#include <vector>
 
 #include "ellc/engine/particles.hpp"
 #include "ellc/engine/settings.hpp"
@@ -26,5 +27,9 @@ namespace ellc::scenario {
 
 // density: ng/µm³, after mass scaling (PackingSpec::density).
 [[nodiscard]] engine::ParticleSet import_packing(const std::string& path, double density, const engine::Box& box);
+// Several species ([[species]]): a data file's atom type t is species t − 1, of density
+// species_densities[t − 1]; a type outside 1..S is refused with its line. One density: as above.
+[[nodiscard]] engine::ParticleSet import_packing(const std::string& path, const std::vector<double>& species_densities,
+                                                 const engine::Box& box);
 
 }  // namespace ellc::scenario

@@ -134,6 +134,8 @@ RunSummary summarize(const Simulation& sim, const ProtocolState& protocol, doubl
   const bool done = protocol.phase == Phase::done;
   RunSummary summary;
   summary.particles = sim.particles().size();
+  summary.particles_per_species.assign(engine::species_materials(sim.settings().contact).size(), 0);
+  for (const std::uint16_t species : sim.particles().species) ++summary.particles_per_species[species];
   summary.steps = sim.step_count();
   summary.time = sim.time();
   summary.dt = sim.settings().dt;
@@ -242,6 +244,11 @@ void write_summary_lines(std::ostream& out, const std::string& scenario_source, 
       << "\nloaded_wall_contacts_beyond_fraction = " << share.wall_contacts
       << "\nloaded_wall_force_beyond_fraction = " << share.wall_force
       << "\nloaded_largest_size_ratio = " << v.largest_ratio << "\n";
+  if (s.particles_per_species.size() > 1) {  // several species ([[species]], in their order)
+    out << "# particles of each species ([[species]] in their order)\n";
+    for (std::size_t k = 0; k < s.particles_per_species.size(); ++k)
+      out << "species_" << k << "_particles = " << s.particles_per_species[k] << "\n";
+  }
 }
 
 }  // namespace ellc::scenario

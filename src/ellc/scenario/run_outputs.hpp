@@ -49,6 +49,7 @@ class RunOutputs {
 
 struct RunSummary {
   std::size_t particles = 0;
+  std::vector<std::size_t> particles_per_species;  // index = species; written when there are several
   std::uint64_t steps = 0;
   double time = 0.0;                // µs
   double dt = 0.0;                  // µs

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <numbers>
 
 #include "ellc/engine/time_step.hpp"
@@ -23,7 +24,7 @@ constexpr double kCheckpointBytesPerParticle = 3000.0;
 constexpr double kImpossibleSteps = 1e13;  // months even at a million steps per second
 
 // The smallest semi-axis the spec can draw: r̂ (1 − 2σ) times the smallest axis ratio factor.
-double smallest_semi_axis(const PackingSpec& spec) noexcept {
+double smallest_semi_axis(const SpeciesSpec& spec) noexcept {
   const double radius = spec.mean_radius * (1.0 - 2.0 * spec.radius_spread);
   if (spec.spheres) return radius;
   double smallest = 1.0;
@@ -67,10 +68,17 @@ RunPlan plan_run(const Scenario& scenario) {
   const PackingSpec& spec = scenario.packing;
   const CalenderingSpec& calendering = scenario.calendering;
   const double count = static_cast<double>(spec.count);
-  plan.smallest_semi_axis = smallest_semi_axis(spec);
-  plan.time_step =
-      scenario.dt.value_or(scenario.time_step_safety *
-                           engine::rayleigh_time(plan.smallest_semi_axis, spec.density, scenario.contact.material));
+  // The shortest Rayleigh time over the species, each at its smallest semi-axis.
+  const std::vector<SpeciesSpec> species = species_of(spec);
+  const std::vector<Material> materials = engine::species_materials(scenario.contact);
+  plan.smallest_semi_axis = std::numeric_limits<double>::infinity();
+  double rayleigh = std::numeric_limits<double>::infinity();
+  for (std::size_t k = 0; k < species.size(); ++k) {
+    const double axis = smallest_semi_axis(species[k]);
+    plan.smallest_semi_axis = std::min(plan.smallest_semi_axis, axis);
+    rayleigh = std::min(rayleigh, engine::rayleigh_time(axis, species[k].density, materials[k]));
+  }
+  plan.time_step = scenario.dt.value_or(scenario.time_step_safety * rayleigh);
   const double largest = largest_bounding_radius(spec);
   const double area = scenario.box.lx * scenario.box.ly;
   const double solid_volume = count * 4.0 / 3.0 * std::numbers::pi * std::pow(spec.mean_radius, 3);

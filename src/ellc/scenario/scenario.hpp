@@ -114,6 +114,10 @@ struct Scenario {
 [[nodiscard]] Scenario read_scenario(const std::string& path);
 [[nodiscard]] Scenario parse_scenario(std::string_view toml_text, const std::string& source);
 
+// The time-step estimate of a packing of the scenario: safety × the Rayleigh time of its smallest
+// semi-axis, the shortest over the species (each with its density and material).
+[[nodiscard]] double packing_time_step(const engine::ParticleSet& particles, const Scenario& scenario);
+
 // The largest bounding radius and the smallest semi-axis the packing spec can produce.
 [[nodiscard]] double largest_bounding_radius(const PackingSpec& spec) noexcept;
 

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <limits>
@@ -22,16 +23,33 @@ namespace ellc::scenario {
 
 using engine::ContactSettings;
 
-double largest_bounding_radius(const PackingSpec& spec) noexcept {
-  if (!spec.file.empty()) return spec.imported_bounding_radius;
-  const double radius = spec.mean_radius * (1.0 + 2.0 * spec.radius_spread);
-  if (spec.spheres) return radius;
+namespace {
+
+// The largest bounding radius of one size and shape distribution.
+double largest_bounding_radius(double mean_radius, double radius_spread, double aspect_min, double aspect_max,
+                               bool spheres) noexcept {
+  const double radius = mean_radius * (1.0 + 2.0 * radius_spread);
+  if (spheres) return radius;
   // Semi-axes r̂ (1, q1, q2) / (q1 q2)^{1/3}; the largest is reached at a corner of the range.
   double largest = 0.0;
-  for (double q1 : {spec.aspect_min, spec.aspect_max})
-    for (double q2 : {spec.aspect_min, spec.aspect_max})
+  for (double q1 : {aspect_min, aspect_max})
+    for (double q2 : {aspect_min, aspect_max})
       largest = std::max(largest, std::max({1.0, q1, q2}) / std::cbrt(q1 * q2));
   return radius * largest;
+}
+
+}  // namespace
+
+double largest_bounding_radius(const PackingSpec& spec) noexcept {
+  if (!spec.file.empty()) return spec.imported_bounding_radius;
+  if (spec.species.empty())
+    return largest_bounding_radius(spec.mean_radius, spec.radius_spread, spec.aspect_min, spec.aspect_max,
+                                   spec.spheres);
+  double largest = 0.0;
+  for (const SpeciesSpec& s : spec.species)
+    largest = std::max(largest,
+                       largest_bounding_radius(s.mean_radius, s.radius_spread, s.aspect_min, s.aspect_max, s.spheres));
+  return largest;
 }
 
 namespace {
@@ -115,16 +133,12 @@ void read_walls(TableReader& table, const toml::node* material, bool contact_gav
   table.finish();
 }
 
-// [packing] file = "...": the particles of a file (packing_import.hpp), relative to the scenario;
-// only density (and seed, unused) go with it.
-void read_packing_file(TableReader& table, Scenario& scenario) {
+// The imported packing's count, mean r̂, largest semi-axis and shape (geometry only: unit densities;
+// with several species, its atom types are checked against them).
+void measure_imported_packing(Scenario& scenario) {
   PackingSpec& spec = scenario.packing;
-  const std::filesystem::path given = table.optional_string("file").value_or("");
-  spec.file = (given.is_absolute() ? given : std::filesystem::path(scenario.source).parent_path() / given).string();
-  scenario.material_density = table.positive("density");
-  spec.seed = static_cast<std::uint64_t>(table.integer_at_least("seed", 0, 1));
-  table.finish();
-  const engine::ParticleSet particles = import_packing(spec.file, 1.0, scenario.box);  // geometry only
+  const std::size_t species = std::max<std::size_t>(1, spec.species.size());
+  const engine::ParticleSet particles = import_packing(spec.file, std::vector<double>(species, 1.0), scenario.box);
   spec.count = particles.size();
   spec.mean_radius = 0.0;
   for (std::size_t k = 0; k < particles.size(); ++k) {
@@ -134,9 +148,21 @@ void read_packing_file(TableReader& table, Scenario& scenario) {
   spec.spheres = particles.all_spheres();
 }
 
+// [packing] file = "...": the particles of a file (packing_import.hpp), relative to the scenario;
+// only density (and seed, unused) go with it. With [[species]], the file is measured once they are read.
+void read_packing_file(TableReader& table, Scenario& scenario, bool several_species) {
+  PackingSpec& spec = scenario.packing;
+  const std::filesystem::path given = table.optional_string("file").value_or("");
+  spec.file = (given.is_absolute() ? given : std::filesystem::path(scenario.source).parent_path() / given).string();
+  scenario.material_density = table.positive("density");
+  spec.seed = static_cast<std::uint64_t>(table.integer_at_least("seed", 0, 1));
+  table.finish();
+  if (!several_species) measure_imported_packing(scenario);
+}
+
 void read_packing(TableReader& table, Scenario& scenario) {
   if (table.has("file")) {
-    read_packing_file(table, scenario);
+    read_packing_file(table, scenario, false);
     return;
   }
   PackingSpec& spec = scenario.packing;
@@ -165,6 +191,131 @@ void read_packing(TableReader& table, Scenario& scenario) {
   if (spec.insertion_fraction > 0.5)
     table.fail("insertion_fraction", spec.insertion_fraction, "a solid fraction in (0, 0.5]");
   table.finish();
+}
+
+// [packing] of a scenario with [[species]]: the blend's count, seed(s), density and insertion; the
+// size and shape distributions are the species'.
+void read_blend_packing(TableReader& table, Scenario& scenario) {
+  PackingSpec& spec = scenario.packing;
+  for (const char* key : {"mean_radius", "radius_spread", "shape", "aspect"})
+    if (table.has(key))
+      table.fail(key, "given", std::string("[[species]] ") + key + ": with several species, each gives its own");
+  if (table.has("file")) {  // a LAMMPS data file whose atom types are the species
+    read_packing_file(table, scenario, true);
+    return;
+  }
+  spec.count = static_cast<std::size_t>(table.integer_at_least("count", 1));
+  if (spec.count > 50'000'000) table.fail("count", std::to_string(spec.count), "at most 50000000 particles");
+  spec.seed = static_cast<std::uint64_t>(table.integer_at_least("seed", 0, 1));
+  scenario.seeds = read_packing_seeds(table);
+  scenario.material_density = table.positive("density");
+  spec.insertion_fraction = positive_or(table, "insertion_fraction", spec.insertion_fraction);
+  if (spec.insertion_fraction > 0.5)
+    table.fail("insertion_fraction", spec.insertion_fraction, "a solid fraction in (0, 0.5]");
+  table.finish();
+}
+
+// One [[species]] table: name, fraction, its size and shape distribution (the keys of [packing] in
+// a one-species scenario), optional density, [species.material] and optional [species.model].
+SpeciesSpec read_species(TableReader& table, Scenario& scenario, Material& material, ModelSpec& model) {
+  SpeciesSpec species;
+  species.name = table.optional_string("name").value_or("");
+  species.fraction = table.number("fraction");
+  if (!(species.fraction > 0.0 && species.fraction <= 1.0))
+    table.fail("fraction", species.fraction, "a number fraction in (0, 1]");
+  species.mean_radius = table.positive("mean_radius");
+  if (species.mean_radius > kMaxLength) table.fail("mean_radius", species.mean_radius, "a radius in (0, 1e100] µm");
+  species.radius_spread = non_negative_or(table, "radius_spread", 0.0);
+  if (species.radius_spread >= 0.45)
+    table.fail("radius_spread", species.radius_spread, "a relative spread in [0, 0.45)");
+  species.spheres = table.choice("shape", {"ellipsoid", "sphere"}, "ellipsoid") == "sphere";
+  if (const auto aspect = table.optional_numbers("aspect", 2)) {
+    if ((*aspect)[0] <= 0.0 || (*aspect)[1] < (*aspect)[0])
+      table.fail("aspect", "[" + format_number((*aspect)[0]) + ", " + format_number((*aspect)[1]) + "]",
+                 "[min, max] with 0 < min <= max (ratios b/a and c/a)");
+    species.aspect_min = (*aspect)[0];
+    species.aspect_max = (*aspect)[1];
+  }
+  if (!species.spheres && (species.aspect_min < 0.5 * (1 - 1e-12) || species.aspect_max > 2.0 * (1 + 1e-12)))
+    scenario.warnings.push_back(table.path() +
+                                ".aspect extends outside the calibrated range 1:[0.5..2]:[0.5..2] of the "
+                                "transition fits (eq. 52-53); the law still evaluates");
+  species.density = positive_or(table, "density", scenario.material_density);
+  {
+    auto material_table = table.table("material");
+    material = read_material(material_table);
+  }
+  if (auto model_table = table.optional_table("model")) model = read_model(*model_table);
+  table.finish();
+  return species;
+}
+
+// A sum for messages: 6 significant digits (0.6 + 0.3 is 0.9, not 0.8999999999999999).
+std::string short_number(double value) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.6g", value);
+  return text;
+}
+
+// Fractions that sum to 1 within this (a blend written with rounded fractions, e.g. 1/3 as 0.333333).
+constexpr double kFractionTolerance = 1e-6;
+
+// [[species]]: the species' distributions into the packing, their materials into the contact
+// settings; every species' [model] (or the top-level one) must be the same, since any two species
+// may touch and a contact has one law.
+void read_all_species(std::vector<TableReader>& tables, Scenario& scenario, const ModelSpec& top_model) {
+  std::vector<ModelSpec> models;
+  std::vector<std::string> model_where;
+  double sum = 0.0;
+  std::string fractions;
+  for (TableReader& table : tables) {
+    Material material;
+    ModelSpec model = top_model;
+    const bool own_model = table.has("model");
+    SpeciesSpec species = read_species(table, scenario, material, model);
+    if (species.name.empty()) species.name = "species" + std::to_string(scenario.packing.species.size());
+    sum += species.fraction;
+    fractions += (fractions.empty() ? "" : " + ") + format_number(species.fraction);
+    scenario.packing.species.push_back(species);
+    scenario.contact.species.push_back(material);
+    models.push_back(model);
+    model_where.push_back(own_model ? table.path() + ".model" : table.path() + " (the top-level [model])");
+  }
+  if (scenario.packing.species.size() > 65535)
+    throw InputError(scenario.source, "species", std::to_string(scenario.packing.species.size()) + " species",
+                     "at most 65535 species");
+  if (!(std::abs(sum - 1.0) <= kFractionTolerance))
+    throw InputError(scenario.source, "species.fraction", "a sum of " + short_number(sum) + " (" + fractions + ")",
+                     "number fractions of the [[species]] that sum to 1 (within 1e-6)");
+  for (std::size_t k = 1; k < models.size(); ++k) {
+    const std::vector<ModelDifference> differences = model_differences(models[0], models[k]);
+    if (differences.empty()) continue;
+    std::string keys;
+    for (const ModelDifference& d : differences)
+      keys += (keys.empty() ? "" : ", ") + d.key + " (" + d.first + " vs " + d.second + ")";
+    throw InputError(scenario.source,
+                     model_where[k] + " differs from " + model_where[0] + " in " + keys +
+                         ": expected one [model] for every species, since any two species may touch and a contact "
+                         "has one law; give these keys the same values in every [species.model], or give one "
+                         "top-level [model] (form = \"stiffness_ratio\" lets the law follow each pair's E_e/Y)");
+  }
+  scenario.contact.material = scenario.contact.species.front();
+  scenario.contact.model.hertz = models.front().hertz;
+  scenario.contact.model.law = models.front().law;
+  PackingSpec& spec = scenario.packing;
+  if (!spec.file.empty()) {  // the file's particles, its atom types the species
+    measure_imported_packing(scenario);
+    return;
+  }
+  // The blend as one distribution, for estimates (layer height, solid thickness): the radius of the
+  // mean particle volume; spheres if every species is.
+  double mean_cube = 0.0;
+  spec.spheres = true;
+  for (const SpeciesSpec& species : spec.species) {
+    mean_cube += species.fraction / sum * std::pow(species.mean_radius, 3);
+    spec.spheres = spec.spheres && species.spheres;
+  }
+  spec.mean_radius = std::cbrt(mean_cube);
 }
 
 void read_box(TableReader& table, Scenario& scenario) {
@@ -322,14 +473,21 @@ Scenario read(const toml::table& root_table, const std::string& source, std::str
   Scenario scenario;
   scenario.source = source;
   scenario.text = std::move(text);
-  {
+  std::vector<TableReader> species_tables = root.tables("species");
+  const bool several_species = !species_tables.empty();
+  if (several_species) {
+    if (root.has("material"))
+      root.fail("material", "given",
+                "no top-level [material] with [[species]]: each species gives its own [species.material]");
+  } else {
     auto material = root.table("material");
     scenario.contact.material = read_material(material);
   }
+  ModelSpec top_model;
   if (auto model = root.optional_table("model")) {
-    const ModelSpec spec = read_model(*model);
-    scenario.contact.model.hertz = spec.hertz;
-    scenario.contact.model.law = spec.law;
+    top_model = read_model(*model);
+    scenario.contact.model.hertz = top_model.hertz;
+    scenario.contact.model.law = top_model.law;
   }
   bool contact_gave_wall_friction = false;
   if (auto contact = root.optional_table("contact")) {
@@ -344,8 +502,12 @@ Scenario read(const toml::table& root_table, const std::string& source, std::str
   }
   {
     auto packing = root.table("packing");
-    read_packing(packing, scenario);
+    if (several_species)
+      read_blend_packing(packing, scenario);
+    else
+      read_packing(packing, scenario);
   }
+  if (several_species) read_all_species(species_tables, scenario, top_model);
   if (auto time = root.optional_table("time")) read_time(*time, scenario);
   if (auto settle = root.optional_table("settle")) read_settle(*settle, scenario.settle);
   {
@@ -356,6 +518,7 @@ Scenario read(const toml::table& root_table, const std::string& source, std::str
   if (auto analysis = root.optional_table("analysis")) scenario.analysis = read_analysis(*analysis);
   root.finish();
   scenario.packing.density = scenario.material_density * scenario.mass_scaling;
+  for (SpeciesSpec& species : scenario.packing.species) species.density *= scenario.mass_scaling;
   cross_check(scenario);
   return scenario;
 }

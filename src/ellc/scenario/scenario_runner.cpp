@@ -1,5 +1,6 @@
 #include "ellc/scenario/scenario_runner.hpp"
 
+#include <limits>
 #include <utility>
 
 #include "ellc/engine/time_step.hpp"
@@ -14,7 +15,6 @@ using engine::EngineSettings;
 using engine::ParticleSet;
 using engine::RunawayError;
 using engine::Simulation;
-using engine::stable_time_step;
 using engine::Wall;
 
 namespace {
@@ -64,11 +64,22 @@ void ScenarioRunner::restore(EngineSettings settings) {
   outputs_.open(*simulation_, protocol_.state().phase, true, ledger_);
 }
 
+double packing_time_step(const ParticleSet& particles, const Scenario& scenario) {
+  // Several species: the shortest estimate over them (each as if it held the smallest particle).
+  const std::vector<SpeciesSpec> species = species_of(scenario.packing);
+  const std::vector<Material> materials = engine::species_materials(scenario.contact);
+  double estimate = std::numeric_limits<double>::infinity();
+  for (std::size_t k = 0; k < species.size(); ++k)
+    estimate = std::min(
+        estimate, engine::stable_time_step(particles, species[k].density, materials[k], scenario.time_step_safety));
+  return estimate;
+}
+
 void ScenarioRunner::build_packing(EngineSettings settings) {
   const PackingSpec& spec = scenario_.packing;
   ParticleSet particles =
       generate_packing(spec, scenario_.box, 0.0, spec.spheres ? OverlapTest{} : ellipsoid_overlap_test());
-  dt_estimate_ = stable_time_step(particles, spec.density, scenario_.contact.material, scenario_.time_step_safety);
+  dt_estimate_ = packing_time_step(particles, scenario_);
   settings.dt = dt_estimate_;
   if (scenario_.dt) {
     if (*scenario_.dt > dt_estimate_) {

@@ -36,6 +36,8 @@ void write_vtk_frame(const std::string& path, const Simulation& simulation) {
     const Eigen::Matrix3d shape = rotation * p.semi_axes[slot].asDiagonal() * rotation.transpose();
     for (int row = 0; row < 3; ++row) out << shape(row, 0) << ' ' << shape(row, 1) << ' ' << shape(row, 2) << '\n';
   }
+  out << "SCALARS species int 1\nLOOKUP_TABLE default\n";  // index into [[species]] (0: one species)
+  for (auto species : p.species) out << species << '\n';
   if (!out) throw std::runtime_error("writing " + path + " failed");
 }
 
