@@ -114,30 +114,52 @@ struct LoadingPoint {
 struct UnloadingCurve {
   double plastic_overlap = 0.0;  // δ_p
   double coefficient = 0.0;      // C_UL
+  double radius_scale = 1.0;     // R_e,pmax / R_e (eq. 48): the contact radius of the branch, not the force
 };
 
 [[nodiscard]] inline UnloadingCurve unloading_curve(const ContactConstants& c, double max_overlap) noexcept {
   const UnloadingBranch branch = unloading_branch(c, max_overlap);
-  return {branch.plastic_overlap, branch.unloading_coefficient};
+  return {branch.plastic_overlap, branch.unloading_coefficient, branch.unloading_radius / c.equivalent_radius};
 }
 
+// The elastic curve F = coefficient · x^{3/2} the contact is on after a step, x = δ − offset: Hertz
+// (eq. 10) while loading or if the contact never yielded, the unloading curve (eq. 49) below δ_*.
+// Its contact radius follows eq. (9) with the branch's radius, c² = (c_c²/δ) · radius_scale · x,
+// radius_scale = R_e,pmax/R_e on unloading and 1 otherwise. Stiffnesses that scale with the
+// contact size (damping, tangential spring) use this radius, so they follow the branch.
+struct ElasticBranch {
+  double coefficient = 0.0;      // C or C_UL
+  double elastic_overlap = 0.0;  // x = δ, or δ − δ_p on unloading (≤ 0 when the law is separated)
+  double radius_scale = 1.0;     // R/R_e
+};
+
+// The law's result with the branch it was evaluated on, so that a caller that needs both (the
+// contact model) derives the unloading curve once per step, not twice.
+struct LawOnBranch {
+  LawResult law;
+  ElasticBranch branch;
+};
+
 namespace law_detail {
-// The law, with the unloading curve of δ_* from `curve_of()`, called only when unloading from
-// δ_* > δ_Y. Every evaluate_contact* below is this one function: the same bits either way.
+// The law and its branch, with the unloading curve of δ_* from `curve_of()`, called only when
+// unloading from δ_* > δ_Y. Every evaluate_contact* below is this one function: the same bits
+// either way (a caller that reads only the LawResult lets the compiler drop the branch).
 template <class CurveOf>
-[[nodiscard]] inline LawResult evaluate_contact_given(const ContactConstants& c, double overlap, double max_overlap,
-                                                      CurveOf&& curve_of) noexcept {
-  if (!(overlap > 0.0)) return {0.0, max_overlap, Regime::separated};
+[[nodiscard]] inline LawOnBranch evaluate_contact_given(const ContactConstants& c, double overlap, double max_overlap,
+                                                        CurveOf&& curve_of) noexcept {
+  const ElasticBranch hertz{c.hertz_coefficient, overlap, 1.0};
+  if (!(overlap > 0.0)) return {{0.0, max_overlap, Regime::separated}, hertz};
   if (overlap >= max_overlap) {
     const LoadingPoint point = loading_force(c, overlap);
-    return {point.force, overlap, point.regime};
+    return {{point.force, overlap, point.regime}, hertz};
   }
   if (max_overlap <= c.yield_overlap)  // never yielded: Hertz both ways, δ_p = 0
-    return {c.hertz_coefficient * pow_three_halves(overlap), max_overlap, Regime::elastic};
+    return {{c.hertz_coefficient * pow_three_halves(overlap), max_overlap, Regime::elastic}, hertz};
   const UnloadingCurve curve = curve_of();
   const double elastic_overlap = overlap - curve.plastic_overlap;  // δ_UL, eq. (32)
-  if (elastic_overlap <= 0.0) return {0.0, max_overlap, Regime::separated};
-  return {curve.coefficient * pow_three_halves(elastic_overlap), max_overlap, Regime::unloading};
+  const ElasticBranch unloading{curve.coefficient, elastic_overlap, curve.radius_scale};
+  if (elastic_overlap <= 0.0) return {{0.0, max_overlap, Regime::separated}, unloading};
+  return {{curve.coefficient * pow_three_halves(elastic_overlap), max_overlap, Regime::unloading}, unloading};
 }
 }  // namespace law_detail
 
@@ -145,6 +167,13 @@ template <class CurveOf>
 // returned max_overlap; deleting history on separation is the caller's policy (docs/model.md §5).
 [[nodiscard]] inline LawResult evaluate_contact(const ContactConstants& c, double overlap,
                                                 double max_overlap) noexcept {
+  return law_detail::evaluate_contact_given(c, overlap, max_overlap, [&] { return unloading_curve(c, max_overlap); })
+      .law;
+}
+
+// The law and the elastic branch the contact is on after it (the same bits as evaluate_contact).
+[[nodiscard]] inline LawOnBranch evaluate_contact_on_branch(const ContactConstants& c, double overlap,
+                                                            double max_overlap) noexcept {
   return law_detail::evaluate_contact_given(c, overlap, max_overlap, [&] { return unloading_curve(c, max_overlap); });
 }
 
@@ -152,7 +181,7 @@ template <class CurveOf>
 // `curve` must be unloading_curve(c, max_overlap) whenever max_overlap > δ_Y (not read otherwise).
 [[nodiscard]] inline LawResult evaluate_contact_on_curve(const ContactConstants& c, double overlap, double max_overlap,
                                                          const UnloadingCurve& curve) noexcept {
-  return law_detail::evaluate_contact_given(c, overlap, max_overlap, [&] { return curve; });
+  return law_detail::evaluate_contact_given(c, overlap, max_overlap, [&] { return curve; }).law;
 }
 
 // The unloading curve of the last δ_* asked for, for one set of constants: derived again only when
@@ -176,26 +205,7 @@ class UnloadingCurveCache {
 // evaluate_contact(c, overlap, max_overlap).
 [[nodiscard]] inline LawResult evaluate_contact_cached(const ContactConstants& c, double overlap, double max_overlap,
                                                        UnloadingCurveCache& cache) noexcept {
-  return law_detail::evaluate_contact_given(c, overlap, max_overlap, [&] { return cache.curve(c, max_overlap); });
-}
-
-// The elastic curve F = coefficient · x^{3/2} the contact is on, x = δ − offset: Hertz (eq. 10)
-// while loading or if the contact never yielded, the unloading branch (eq. 49) below δ_*. Its
-// contact radius follows eq. (9) with the branch's radius, c² = (c_c²/δ) · radius_scale · x, where
-// radius_scale is R_e,pmax/R_e on unloading and 1 otherwise. Stiffnesses that scale with the
-// contact size (damping, tangential spring) use this radius, so they follow the branch.
-struct ElasticBranch {
-  double coefficient = 0.0;      // C or C_UL
-  double elastic_overlap = 0.0;  // x = δ, or δ − δ_p on unloading
-  double radius_scale = 1.0;     // R/R_e
-};
-
-[[nodiscard]] inline ElasticBranch elastic_branch(const ContactConstants& c, double overlap,
-                                                  double max_overlap) noexcept {
-  if (overlap >= max_overlap || max_overlap <= c.yield_overlap) return {c.hertz_coefficient, overlap, 1.0};
-  const UnloadingBranch branch = unloading_branch(c, max_overlap);
-  return {branch.unloading_coefficient, overlap - branch.plastic_overlap,
-          branch.unloading_radius / c.equivalent_radius};
+  return law_detail::evaluate_contact_given(c, overlap, max_overlap, [&] { return cache.curve(c, max_overlap); }).law;
 }
 
 }  // namespace ellc
