@@ -114,12 +114,11 @@ struct LoadingPoint {
 struct UnloadingCurve {
   double plastic_overlap = 0.0;  // δ_p
   double coefficient = 0.0;      // C_UL
-  double radius_scale = 1.0;     // R_e,pmax / R_e (eq. 48): the contact radius of the branch, not the force
 };
 
 [[nodiscard]] inline UnloadingCurve unloading_curve(const ContactConstants& c, double max_overlap) noexcept {
   const UnloadingBranch branch = unloading_branch(c, max_overlap);
-  return {branch.plastic_overlap, branch.unloading_coefficient, branch.unloading_radius / c.equivalent_radius};
+  return {branch.plastic_overlap, branch.unloading_coefficient};
 }
 
 // The elastic curve F = coefficient · x^{3/2} the contact is on after a step, x = δ − offset: Hertz
@@ -141,6 +140,25 @@ struct LawOnBranch {
 };
 
 namespace law_detail {
+// The unloading curve and the radius of its patch, R_e,pmax/R_e (eq. 48): what the branch needs
+// besides the force. Kept curves (16 bytes, per contact) carry no radius: their callers
+// (evaluate_contact_on_curve, evaluate_contact_cached) return only the LawResult, and the branch's
+// radius_scale from them would be NaN.
+struct UnloadingCurveAndRadius : UnloadingCurve {
+  double radius_scale = 1.0;
+};
+[[nodiscard]] inline UnloadingCurveAndRadius unloading_curve_and_radius(const ContactConstants& c,
+                                                                        double max_overlap) noexcept {
+  const UnloadingBranch branch = unloading_branch(c, max_overlap);
+  return {{branch.plastic_overlap, branch.unloading_coefficient}, branch.unloading_radius / c.equivalent_radius};
+}
+[[nodiscard]] inline double radius_scale_of(const UnloadingCurveAndRadius& curve) noexcept {
+  return curve.radius_scale;
+}
+[[nodiscard]] inline double radius_scale_of(const UnloadingCurve&) noexcept {
+  return std::numeric_limits<double>::quiet_NaN();
+}
+
 // The law and its branch, with the unloading curve of δ_* from `curve_of()`, called only when
 // unloading from δ_* > δ_Y. Every evaluate_contact* below is this one function: the same bits
 // either way (a caller that reads only the LawResult lets the compiler drop the branch).
@@ -155,9 +173,9 @@ template <class CurveOf>
   }
   if (max_overlap <= c.yield_overlap)  // never yielded: Hertz both ways, δ_p = 0
     return {{c.hertz_coefficient * pow_three_halves(overlap), max_overlap, Regime::elastic}, hertz};
-  const UnloadingCurve curve = curve_of();
+  const auto curve = curve_of();  // an UnloadingCurve, with the radius when the caller wants the branch
   const double elastic_overlap = overlap - curve.plastic_overlap;  // δ_UL, eq. (32)
-  const ElasticBranch unloading{curve.coefficient, elastic_overlap, curve.radius_scale};
+  const ElasticBranch unloading{curve.coefficient, elastic_overlap, radius_scale_of(curve)};
   if (elastic_overlap <= 0.0) return {{0.0, max_overlap, Regime::separated}, unloading};
   return {{curve.coefficient * pow_three_halves(elastic_overlap), max_overlap, Regime::unloading}, unloading};
 }
@@ -174,7 +192,8 @@ template <class CurveOf>
 // The law and the elastic branch the contact is on after it (the same bits as evaluate_contact).
 [[nodiscard]] inline LawOnBranch evaluate_contact_on_branch(const ContactConstants& c, double overlap,
                                                             double max_overlap) noexcept {
-  return law_detail::evaluate_contact_given(c, overlap, max_overlap, [&] { return unloading_curve(c, max_overlap); });
+  return law_detail::evaluate_contact_given(c, overlap, max_overlap,
+                                            [&] { return law_detail::unloading_curve_and_radius(c, max_overlap); });
 }
 
 // The law with the unloading curve kept by the caller (the same bits as evaluate_contact):
