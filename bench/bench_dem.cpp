@@ -18,6 +18,7 @@
 #include <sys/resource.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdlib>
 #include <fstream>
@@ -111,15 +112,50 @@ const Simulation& dense_ellipsoids() {
   return *simulation;
 }
 
+// The slots of `from` along a Z-order (Morton) curve through the box: neighbours in space become
+// neighbours in memory. The packing's ids are in insertion order, i.e. random in space.
+std::vector<std::size_t> z_order(const ParticleSet& from, const Box& box, double top) {
+  const auto spread = [](std::uint64_t v) {  // 21 bits → every third bit
+    v &= 0x1fffff;
+    v = (v | v << 32) & 0x1f00000000ffffULL;
+    v = (v | v << 16) & 0x1f0000ff0000ffULL;
+    v = (v | v << 8) & 0x100f00f00f00f00fULL;
+    v = (v | v << 4) & 0x10c30c30c30c30c3ULL;
+    v = (v | v << 2) & 0x1249249249249249ULL;
+    return v;
+  };
+  const auto cell = [](double x, double length) {
+    return static_cast<std::uint64_t>(std::clamp(x / length, 0.0, 1.0) * 2097151.0);
+  };
+  std::vector<std::pair<std::uint64_t, std::size_t>> keyed(from.size());
+  for (std::size_t slot = 0; slot < from.size(); ++slot) {
+    const Eigen::Vector3d& p = from.position[slot];
+    keyed[slot] = {spread(cell(p.x(), box.lx)) | spread(cell(p.y(), box.ly)) << 1 | spread(cell(p.z(), top)) << 2,
+                   slot};
+  }
+  std::sort(keyed.begin(), keyed.end());
+  std::vector<std::size_t> order(from.size());
+  for (std::size_t k = 0; k < order.size(); ++k) order[k] = keyed[k].second;
+  return order;
+}
+
 // Copy of the dense state with fresh contact histories: ellipsoids, or spheres of the same volume.
-std::unique_ptr<Simulation> dense(bool spheres) {
+// `spatial_order`: slots and ids renumbered along a Z-order curve (the same packing, in another
+// memory order: an experiment on cache misses at large N).
+std::unique_ptr<Simulation> dense(bool spheres, bool spatial_order = false) {
   const Simulation& source = dense_ellipsoids();
   const Packing& packing = loose_packing();
   ParticleSet particles;
   const ParticleSet& from = source.particles();
-  for (std::size_t slot = 0; slot < from.size(); ++slot)
-    particles.add(from.id[slot], spheres ? Eigen::Vector3d::Constant(from.mean_radius[slot]) : from.semi_axes[slot],
-                  kDensity, from.position[slot], from.orientation[slot]);
+  std::vector<std::size_t> order(from.size());
+  for (std::size_t slot = 0; slot < from.size(); ++slot) order[slot] = slot;
+  if (spatial_order) order = z_order(from, packing.box, packing.top);
+  for (std::size_t k = 0; k < order.size(); ++k) {
+    const std::size_t slot = order[k];
+    particles.add(spatial_order ? static_cast<std::uint32_t>(k) : from.id[slot],
+                  spheres ? Eigen::Vector3d::Constant(from.mean_radius[slot]) : from.semi_axes[slot], kDensity,
+                  from.position[slot], from.orientation[slot]);
+  }
   const EngineSettings settings = bench_settings(spheres, particles, packing.box);
   auto sim = std::make_unique<Simulation>(settings, std::move(particles), source.walls());
   for (int step = 0; step < 100; ++step) sim->step();  // spheres: let the changed overlaps settle
@@ -147,10 +183,10 @@ double process_cpu_seconds() {
 double ellipsoid_rate = 0.0;
 double sphere_rate = 0.0;
 
-void run(benchmark::State& state, bool spheres, double& rate) {
+void run(benchmark::State& state, bool spheres, double& rate, bool spatial_order = false) {
   dense_ellipsoids();  // the shared setup, not counted in the memory of this run
   const double resident_before = resident_bytes();
-  auto simulation = dense(spheres);
+  auto simulation = dense(spheres, spatial_order);
   const auto count = static_cast<double>(simulation->particles().size());
   std::int64_t steps = 0;
   const double cpu_start = process_cpu_seconds();
@@ -183,6 +219,11 @@ void run(benchmark::State& state, bool spheres, double& rate) {
 
 void BM_dem_ellipsoids_becker_kamlah(benchmark::State& state) { run(state, false, ellipsoid_rate); }
 void BM_dem_spheres_hertz(benchmark::State& state) { run(state, true, sphere_rate); }
+// The same two runs with the particles renumbered along a Z-order curve (not in bench/scaling.py's
+// filter; `--benchmark_filter=dem_` runs both orders in one process, on one packing).
+double ellipsoid_rate_z = 0.0, sphere_rate_z = 0.0;
+void BM_z_order_dem_ellipsoids_becker_kamlah(benchmark::State& state) { run(state, false, ellipsoid_rate_z, true); }
+void BM_z_order_dem_spheres_hertz(benchmark::State& state) { run(state, true, sphere_rate_z, true); }
 void BM_dem_ratio_ellipsoid_over_sphere(benchmark::State& state) {
   for (auto _ : state) benchmark::DoNotOptimize(ellipsoid_rate);
   state.counters["ellipsoid_particle_steps_per_s"] = ellipsoid_rate;
@@ -198,5 +239,10 @@ std::int64_t timed_steps() {
 BENCHMARK(BM_dem_ellipsoids_becker_kamlah)->Unit(benchmark::kMillisecond)->Iterations(timed_steps())->UseRealTime();
 BENCHMARK(BM_dem_spheres_hertz)->Unit(benchmark::kMillisecond)->Iterations(timed_steps())->UseRealTime();
 BENCHMARK(BM_dem_ratio_ellipsoid_over_sphere)->Iterations(1);
+BENCHMARK(BM_z_order_dem_ellipsoids_becker_kamlah)
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(timed_steps())
+    ->UseRealTime();
+BENCHMARK(BM_z_order_dem_spheres_hertz)->Unit(benchmark::kMillisecond)->Iterations(timed_steps())->UseRealTime();
 
 }  // namespace

@@ -49,8 +49,9 @@ TEST(ContactModel, BothDampingStiffnessesAreTheHertzTangentOnCircularContacts) {
     model.damping = damping;
     const InteractionContext context = make_interaction(model, kNmc, kNmc);
     ContactHistory history;
-    const double law = evaluate_contact(constants, overlap, 0.0).force;
-    return contact_force(context, constants, overlap, law, approaching(speed), 1e-3, history).on_j.x() - law;
+    const LawOnBranch law = evaluate_contact_on_branch(constants, overlap, 0.0);
+    return contact_force(context, constants, law.law.force, law.branch, approaching(speed), 1e-3, history).on_j.x() -
+           law.law.force;
   };
   const ContactConstants spheres = constants_for(kNmc, {0.2, 0.2}, {0.2, 0.2});
   EXPECT_NEAR(damped_force(DampingModel::contact_radius, spheres), damped_force(DampingModel::hertz_tangent, spheres),
@@ -83,8 +84,9 @@ TEST(ContactModel, TangentialStiffnessIsMindlinOrTheRatioOfTheNormalOne) {
     const InteractionContext context = make_interaction(m, kNmc, kNmc);
     ContactHistory history;
     const ContactKinematics kinematics{Eigen::Vector3d::UnitX(), slide * Eigen::Vector3d::UnitY(), 2.0};
-    const double law = evaluate_contact(constants, overlap, 0.0).force;
-    const Eigen::Vector3d force = contact_force(context, constants, overlap, law, kinematics, dt, history).on_j;
+    const LawOnBranch law = evaluate_contact_on_branch(constants, overlap, 0.0);
+    const Eigen::Vector3d force =
+        contact_force(context, constants, law.law.force, law.branch, kinematics, dt, history).on_j;
     EXPECT_NEAR(history.spring().y(), slide * dt, 1e-18);  // stuck: the spring took the whole motion
     return -force.y() / (slide * dt);                      // k_t
   };

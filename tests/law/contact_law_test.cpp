@@ -237,6 +237,47 @@ TEST(Law, KeptAndCachedUnloadingCurvesGiveTheSameBits) {
   EXPECT_GT(episodes, 500);          // with many different δ_* per walk
 }
 
+// evaluate_contact_on_branch gives the law's bits and the elastic curve F = C x^{3/2} the force was
+// on: Hertz (C, δ, 1) while loading or never yielded, the unloading curve of eq. (49) below δ_*
+// (C_UL, δ − δ_p, R_e,pmax/R_e > 1), so the contact model need not derive that curve again.
+TEST(Law, TheBranchIsTheElasticCurveTheForceWasOn) {
+  std::mt19937_64 rng(12);
+  std::uniform_real_distribution<double> aspect(0.3, 3.0), radius(0.5, 20.0), factor(-1.0, 14.0);
+  int unloading_steps = 0;
+  for (int trial = 0; trial < 200; ++trial) {
+    const auto c = ellc::testing::tip_constants(ellc::testing::from_aspect(aspect(rng), aspect(rng), radius(rng)),
+                                                ellc::testing::from_aspect(aspect(rng), aspect(rng), radius(rng)), 0.0,
+                                                0.0, trial % 2 ? HertzMode::exact : HertzMode::hale);
+    double max_overlap = 0.0;
+    for (int step = 0; step < 40; ++step) {
+      const double overlap = factor(rng) * c.yield_overlap;
+      const LawResult plain = evaluate_contact(c, overlap, max_overlap);
+      const LawOnBranch on_branch = evaluate_contact_on_branch(c, overlap, max_overlap);
+      ASSERT_EQ(on_branch.law.force, plain.force) << trial << " " << step;
+      ASSERT_EQ(on_branch.law.max_overlap, plain.max_overlap);
+      ASSERT_EQ(on_branch.law.regime, plain.regime);
+      const ElasticBranch& branch = on_branch.branch;
+      if (overlap > 0.0 && overlap < max_overlap && max_overlap > c.yield_overlap) {
+        const UnloadingBranch unloading = unloading_branch(c, max_overlap);
+        EXPECT_EQ(branch.coefficient, unloading.unloading_coefficient);
+        EXPECT_EQ(branch.elastic_overlap, overlap - unloading.plastic_overlap);
+        EXPECT_EQ(branch.radius_scale, unloading.unloading_radius / c.equivalent_radius);
+        EXPECT_GT(branch.radius_scale, 1.0);  // the flattened patch: R_e,pmax > R_e
+      } else {
+        EXPECT_EQ(branch.coefficient, c.hertz_coefficient);
+        EXPECT_EQ(branch.elastic_overlap, overlap);
+        EXPECT_EQ(branch.radius_scale, 1.0);
+      }
+      if (plain.regime == Regime::unloading || (plain.regime == Regime::elastic && overlap < max_overlap)) {
+        ++unloading_steps;
+        EXPECT_EQ(plain.force, branch.coefficient * (branch.elastic_overlap * std::sqrt(branch.elastic_overlap)));
+      }
+      max_overlap = plain.max_overlap;
+    }
+  }
+  EXPECT_GT(unloading_steps, 1000);
+}
+
 TEST(Law, SeparatedAtZeroOrNegativeOverlapKeepsHistoryForTheCaller) {
   const auto c = paper_case2();
   const LawResult result = evaluate_contact(c, -0.1, 1.0);

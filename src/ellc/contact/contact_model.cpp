@@ -58,15 +58,14 @@ double effective_shear_modulus(const Material& body_i, const Material& body_j) n
 }
 
 // The contact's size and the normal stiffness the dashpot (and the ratio spring) scale with, on
-// the elastic branch the contact is on (law/contact_law.hpp, elastic_branch).
+// the elastic branch the contact is on (law/contact_law.hpp, ElasticBranch).
 struct BranchStiffness {
   double contact_radius = 0.0;  // c, eq. (9) with the branch's radius
   double normal = 0.0;          // k_n
 };
 
-BranchStiffness branch_stiffness(DampingModel model, const ContactConstants& constants, double overlap,
-                                 double max_overlap) noexcept {
-  const ElasticBranch branch = elastic_branch(constants, overlap, std::max(max_overlap, overlap));
+BranchStiffness branch_stiffness(DampingModel model, const ContactConstants& constants,
+                                 const ElasticBranch& branch) noexcept {
   const double x = std::max(branch.elastic_overlap, 0.0);
   BranchStiffness stiffness;
   stiffness.contact_radius = branch.radius_scale == 1.0
@@ -140,12 +139,12 @@ double tangential_stiffness(const InteractionContext& context, const BranchStiff
 }
 }  // namespace
 
-ContactForce contact_force(const InteractionContext& context, const ContactConstants& constants, double overlap,
-                           double law_force, const ContactKinematics& kinematics, double dt,
+ContactForce contact_force(const InteractionContext& context, const ContactConstants& constants, double law_force,
+                           const ElasticBranch& elastic, const ContactKinematics& kinematics, double dt,
                            ContactHistory& history) noexcept {
   const ContactModel& model = context.model;
   const Eigen::Vector3d& n = kinematics.normal;
-  const BranchStiffness branch = branch_stiffness(model.damping, constants, overlap, history.max_overlap);
+  const BranchStiffness branch = branch_stiffness(model.damping, constants, elastic);
   const double normal_speed = kinematics.relative_velocity.dot(n);  // > 0 when separating
   const double normal_force = damped_normal_force(
       law_force, viscous_damping(model.normal_damping, kinematics.effective_mass, branch.normal), normal_speed);

@@ -10,7 +10,7 @@
 //  damping     contact_radius  c = 2 ζ sqrt(m* k), k_n = 2 E_e c: the Hertz tangent stiffness
 //                              written with the contact radius c of eq. (9) on the current branch
 //              hertz_tangent   the same with k_n = 3/2 C x^{1/2}, the tangent of the branch F = C x^{3/2}
-//  Branch (law/contact_law.hpp, elastic_branch): Hertz while loading, the unloading curve (eq. 49)
+//  Branch (law/contact_law.hpp, ElasticBranch): Hertz while loading, the unloading curve (eq. 49)
 //  with R_e,pmax and x = δ − δ_p below δ_*.
 //  tangential  mindlin         k_t = 8 G_e c_c,  G_e = [ (2 − ν_I)/G_I + (2 − ν_J)/G_J ]⁻¹
 //              ratio           k_t = κ k_n, k_n of the damping sub-model
@@ -27,6 +27,7 @@
 #include "ellc/geometry/narrow_phase.hpp"
 #include "ellc/hertz/elliptic_hertz.hpp"
 #include "ellc/law/contact_constants.hpp"
+#include "ellc/law/contact_law.hpp"
 #include "ellc/law/transition_fit.hpp"
 #include "ellc/material/material.hpp"
 
@@ -99,10 +100,11 @@ struct ContactForce {
 };
 
 // Force on J of one touching contact whose law force F_law = law_force was evaluated with
-// `constants` at `overlap`. Updates the history's tangential spring (δ_* is the caller's, from
-// the law's result).
+// `constants` on the elastic branch `elastic` (both from evaluate_contact_on_branch). Updates the
+// history's tangential spring (δ_* is the caller's, from the law's result).
 [[nodiscard]] ContactForce contact_force(const InteractionContext& context, const ContactConstants& constants,
-                                         double overlap, double law_force, const ContactKinematics& kinematics,
-                                         double dt, ContactHistory& history) noexcept;
+                                         double law_force, const ElasticBranch& elastic,
+                                         const ContactKinematics& kinematics, double dt,
+                                         ContactHistory& history) noexcept;
 
 }  // namespace ellc

@@ -7,7 +7,9 @@ NormalContact normal_contact(const ContactGeometry& geometry, const ContactMater
   NormalContact contact;
   contact.constants =
       make_contact_constants(material, hertz_shape(geometry.relative, mode), mean_radius_sum, parameters);
-  contact.law = evaluate_contact(contact.constants, geometry.overlap, max_overlap);
+  const LawOnBranch law = evaluate_contact_on_branch(contact.constants, geometry.overlap, max_overlap);
+  contact.law = law.law;
+  contact.branch = law.branch;
   contact.force_on_j = contact.law.force * geometry.normal;
   contact.application_point = geometry.point;
   return contact;

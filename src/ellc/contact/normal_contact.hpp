@@ -18,6 +18,7 @@ struct NormalContact {
   Eigen::Vector3d force_on_j = Eigen::Vector3d::Zero();         // F n: pushes J away from I
   Eigen::Vector3d application_point = Eigen::Vector3d::Zero();  // the contact point
   LawResult law;                                                // force magnitude, new δ_*, regime
+  ElasticBranch branch;                                         // the curve the law was on
   ContactConstants constants;                                   // of this configuration
 };
 

@@ -45,7 +45,9 @@ PairSolution sphere_pair(const BodyRef& body_i, const BodyRef& body_j, ContactHi
   const ContactConstants& constants =
       cached_constants(cache, {1.0 / radius_i, 1.0 / radius_i}, {1.0 / radius_j, 1.0 / radius_j},
                        body_i.mean_radius + body_j.mean_radius, context);
-  solution.law = evaluate_contact(constants, overlap, history.max_overlap);
+  const LawOnBranch law = evaluate_contact_on_branch(constants, overlap, history.max_overlap);
+  solution.law = law.law;
+  solution.branch = law.branch;
   solution.constants = &constants;
   record_contact(solution, history, cache);
   return solution;
@@ -64,7 +66,9 @@ PairSolution sphere_wall(const BodyRef& body, const WallPlane& wall, ContactHist
   solution.point = Eigen::Vector3d(body.centre.x(), body.centre.y(), wall.position);
   const ContactConstants& constants =
       cached_constants(cache, {1.0 / radius, 1.0 / radius}, {0.0, 0.0}, 2.0 * body.mean_radius, context);
-  solution.law = evaluate_contact(constants, overlap, history.max_overlap);
+  const LawOnBranch law = evaluate_contact_on_branch(constants, overlap, history.max_overlap);
+  solution.law = law.law;
+  solution.branch = law.branch;
   solution.constants = &constants;
   record_contact(solution, history, cache);
   return solution;
@@ -95,7 +99,7 @@ PairForces pair_forces(const PairSolution& solution, const Eigen::Vector3d& cent
                                      motion_i.mass * motion_j.mass / (motion_i.mass + motion_j.mass)};
   PairForces forces;
   forces.contact =
-      contact_force(context, *solution.constants, solution.overlap, solution.law.force, kinematics, dt, history);
+      contact_force(context, *solution.constants, solution.law.force, solution.branch, kinematics, dt, history);
   forces.torque_on_i = -lever_i.cross(forces.contact.on_j);
   forces.torque_on_j = lever_j.cross(forces.contact.on_j);
   return forces;
@@ -110,7 +114,7 @@ WallForces wall_forces(const PairSolution& solution, const Eigen::Vector3d& cent
       Eigen::Vector3d(0.0, 0.0, wall_velocity) - motion.velocity - motion.angular_velocity.cross(lever), motion.mass};
   WallForces forces;
   forces.contact =
-      contact_force(context, *solution.constants, solution.overlap, solution.law.force, kinematics, dt, history);
+      contact_force(context, *solution.constants, solution.law.force, solution.branch, kinematics, dt, history);
   forces.lever_cross_force = lever.cross(forces.contact.on_j);
   return forces;
 }

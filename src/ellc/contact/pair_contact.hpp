@@ -32,6 +32,7 @@ struct PairSolution {
   double clearance = 0.0;
   int iterations = 0;  // narrow-phase Newton steps (0 on the closed-form and shortcut paths)
   LawResult law;
+  ElasticBranch branch;                         // the curve the law was on (for the stiffnesses)
   const ContactConstants* constants = nullptr;  // points into the cache (valid while it lives)
 };
 

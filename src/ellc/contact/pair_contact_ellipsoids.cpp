@@ -42,6 +42,7 @@ PairSolution with_law(const NarrowPhaseResult& found, double mean_radius_sum, Co
   solution.point = contact.application_point;
   solution.overlap = found.geometry.overlap;
   solution.law = contact.law;
+  solution.branch = contact.branch;
   solution.constants = &cache.constants;
   history.max_overlap = solution.law.max_overlap;
   cache.last_overlap = solution.overlap;

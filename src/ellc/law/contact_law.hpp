@@ -121,23 +121,63 @@ struct UnloadingCurve {
   return {branch.plastic_overlap, branch.unloading_coefficient};
 }
 
+// The elastic curve F = coefficient · x^{3/2} the contact is on after a step, x = δ − offset: Hertz
+// (eq. 10) while loading or if the contact never yielded, the unloading curve (eq. 49) below δ_*.
+// Its contact radius follows eq. (9) with the branch's radius, c² = (c_c²/δ) · radius_scale · x,
+// radius_scale = R_e,pmax/R_e on unloading and 1 otherwise. Stiffnesses that scale with the
+// contact size (damping, tangential spring) use this radius, so they follow the branch.
+struct ElasticBranch {
+  double coefficient = 0.0;      // C or C_UL
+  double elastic_overlap = 0.0;  // x = δ, or δ − δ_p on unloading (≤ 0 when the law is separated)
+  double radius_scale = 1.0;     // R/R_e
+};
+
+// The law's result with the branch it was evaluated on, so that a caller that needs both (the
+// contact model) derives the unloading curve once per step, not twice.
+struct LawOnBranch {
+  LawResult law;
+  ElasticBranch branch;
+};
+
 namespace law_detail {
-// The law, with the unloading curve of δ_* from `curve_of()`, called only when unloading from
-// δ_* > δ_Y. Every evaluate_contact* below is this one function: the same bits either way.
+// The unloading curve and the radius of its patch, R_e,pmax/R_e (eq. 48): what the branch needs
+// besides the force. Kept curves (16 bytes, per contact) carry no radius: their callers
+// (evaluate_contact_on_curve, evaluate_contact_cached) return only the LawResult, and the branch's
+// radius_scale from them would be NaN.
+struct UnloadingCurveAndRadius : UnloadingCurve {
+  double radius_scale = 1.0;
+};
+[[nodiscard]] inline UnloadingCurveAndRadius unloading_curve_and_radius(const ContactConstants& c,
+                                                                        double max_overlap) noexcept {
+  const UnloadingBranch branch = unloading_branch(c, max_overlap);
+  return {{branch.plastic_overlap, branch.unloading_coefficient}, branch.unloading_radius / c.equivalent_radius};
+}
+[[nodiscard]] inline double radius_scale_of(const UnloadingCurveAndRadius& curve) noexcept {
+  return curve.radius_scale;
+}
+[[nodiscard]] inline double radius_scale_of(const UnloadingCurve&) noexcept {
+  return std::numeric_limits<double>::quiet_NaN();
+}
+
+// The law and its branch, with the unloading curve of δ_* from `curve_of()`, called only when
+// unloading from δ_* > δ_Y. Every evaluate_contact* below is this one function: the same bits
+// either way (a caller that reads only the LawResult lets the compiler drop the branch).
 template <class CurveOf>
-[[nodiscard]] inline LawResult evaluate_contact_given(const ContactConstants& c, double overlap, double max_overlap,
-                                                      CurveOf&& curve_of) noexcept {
-  if (!(overlap > 0.0)) return {0.0, max_overlap, Regime::separated};
+[[nodiscard]] inline LawOnBranch evaluate_contact_given(const ContactConstants& c, double overlap, double max_overlap,
+                                                        CurveOf&& curve_of) noexcept {
+  const ElasticBranch hertz{c.hertz_coefficient, overlap, 1.0};
+  if (!(overlap > 0.0)) return {{0.0, max_overlap, Regime::separated}, hertz};
   if (overlap >= max_overlap) {
     const LoadingPoint point = loading_force(c, overlap);
-    return {point.force, overlap, point.regime};
+    return {{point.force, overlap, point.regime}, hertz};
   }
   if (max_overlap <= c.yield_overlap)  // never yielded: Hertz both ways, δ_p = 0
-    return {c.hertz_coefficient * pow_three_halves(overlap), max_overlap, Regime::elastic};
-  const UnloadingCurve curve = curve_of();
+    return {{c.hertz_coefficient * pow_three_halves(overlap), max_overlap, Regime::elastic}, hertz};
+  const auto curve = curve_of();  // an UnloadingCurve, with the radius when the caller wants the branch
   const double elastic_overlap = overlap - curve.plastic_overlap;  // δ_UL, eq. (32)
-  if (elastic_overlap <= 0.0) return {0.0, max_overlap, Regime::separated};
-  return {curve.coefficient * pow_three_halves(elastic_overlap), max_overlap, Regime::unloading};
+  const ElasticBranch unloading{curve.coefficient, elastic_overlap, radius_scale_of(curve)};
+  if (elastic_overlap <= 0.0) return {{0.0, max_overlap, Regime::separated}, unloading};
+  return {{curve.coefficient * pow_three_halves(elastic_overlap), max_overlap, Regime::unloading}, unloading};
 }
 }  // namespace law_detail
 
@@ -145,14 +185,22 @@ template <class CurveOf>
 // returned max_overlap; deleting history on separation is the caller's policy (docs/model.md §5).
 [[nodiscard]] inline LawResult evaluate_contact(const ContactConstants& c, double overlap,
                                                 double max_overlap) noexcept {
-  return law_detail::evaluate_contact_given(c, overlap, max_overlap, [&] { return unloading_curve(c, max_overlap); });
+  return law_detail::evaluate_contact_given(c, overlap, max_overlap, [&] { return unloading_curve(c, max_overlap); })
+      .law;
+}
+
+// The law and the elastic branch the contact is on after it (the same bits as evaluate_contact).
+[[nodiscard]] inline LawOnBranch evaluate_contact_on_branch(const ContactConstants& c, double overlap,
+                                                            double max_overlap) noexcept {
+  return law_detail::evaluate_contact_given(c, overlap, max_overlap,
+                                            [&] { return law_detail::unloading_curve_and_radius(c, max_overlap); });
 }
 
 // The law with the unloading curve kept by the caller (the same bits as evaluate_contact):
 // `curve` must be unloading_curve(c, max_overlap) whenever max_overlap > δ_Y (not read otherwise).
 [[nodiscard]] inline LawResult evaluate_contact_on_curve(const ContactConstants& c, double overlap, double max_overlap,
                                                          const UnloadingCurve& curve) noexcept {
-  return law_detail::evaluate_contact_given(c, overlap, max_overlap, [&] { return curve; });
+  return law_detail::evaluate_contact_given(c, overlap, max_overlap, [&] { return curve; }).law;
 }
 
 // The unloading curve of the last δ_* asked for, for one set of constants: derived again only when
@@ -176,26 +224,7 @@ class UnloadingCurveCache {
 // evaluate_contact(c, overlap, max_overlap).
 [[nodiscard]] inline LawResult evaluate_contact_cached(const ContactConstants& c, double overlap, double max_overlap,
                                                        UnloadingCurveCache& cache) noexcept {
-  return law_detail::evaluate_contact_given(c, overlap, max_overlap, [&] { return cache.curve(c, max_overlap); });
-}
-
-// The elastic curve F = coefficient · x^{3/2} the contact is on, x = δ − offset: Hertz (eq. 10)
-// while loading or if the contact never yielded, the unloading branch (eq. 49) below δ_*. Its
-// contact radius follows eq. (9) with the branch's radius, c² = (c_c²/δ) · radius_scale · x, where
-// radius_scale is R_e,pmax/R_e on unloading and 1 otherwise. Stiffnesses that scale with the
-// contact size (damping, tangential spring) use this radius, so they follow the branch.
-struct ElasticBranch {
-  double coefficient = 0.0;      // C or C_UL
-  double elastic_overlap = 0.0;  // x = δ, or δ − δ_p on unloading
-  double radius_scale = 1.0;     // R/R_e
-};
-
-[[nodiscard]] inline ElasticBranch elastic_branch(const ContactConstants& c, double overlap,
-                                                  double max_overlap) noexcept {
-  if (overlap >= max_overlap || max_overlap <= c.yield_overlap) return {c.hertz_coefficient, overlap, 1.0};
-  const UnloadingBranch branch = unloading_branch(c, max_overlap);
-  return {branch.unloading_coefficient, overlap - branch.plastic_overlap,
-          branch.unloading_radius / c.equivalent_radius};
+  return law_detail::evaluate_contact_given(c, overlap, max_overlap, [&] { return cache.curve(c, max_overlap); }).law;
 }
 
 }  // namespace ellc
