@@ -22,6 +22,7 @@
 #include "ellc/io/table_reader.hpp"
 #include "ellc/scenario/scenario.hpp"
 #include "support/cli_run.hpp"
+#include "support/read_text.hpp"
 
 namespace {
 namespace fs = std::filesystem;
@@ -29,12 +30,7 @@ namespace fs = std::filesystem;
 using ellc::test::CliRun;
 using ellc::test::run_cli;
 
-std::string read_text(const fs::path& path) {
-  std::ifstream file(path, std::ios::binary);
-  std::stringstream text;
-  text << file.rdbuf();
-  return text.str();
-}
+using ellc::test::read_text;
 
 // summary.txt's `key = value` lines as numbers (the flags and names are skipped).
 std::map<std::string, double> summary_numbers(const fs::path& path) {

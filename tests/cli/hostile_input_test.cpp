@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "support/cli_run.hpp"
+#include "support/read_text.hpp"
 
 namespace {
 namespace fs = std::filesystem;
@@ -21,12 +22,7 @@ namespace fs = std::filesystem;
 using ellc::test::CliRun;
 using ellc::test::run_cli;
 
-std::string read_text(const fs::path& path) {
-  std::ifstream file(path, std::ios::binary);
-  std::stringstream text;
-  text << file.rdbuf();
-  return text.str();
-}
+using ellc::test::read_text;
 
 class HostileCli : public ::testing::Test {
  protected:

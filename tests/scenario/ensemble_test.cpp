@@ -20,6 +20,7 @@
 #include "ellc/scenario/ensemble.hpp"
 #include "scenario_support.hpp"
 #include "support/input_error.hpp"
+#include "support/read_text.hpp"
 #include "support/simulation_state.hpp"
 
 namespace ellc::scenario {
@@ -36,12 +37,7 @@ using testing::replace_line;
 // The quick example with `seed = 2026` replaced by `line`.
 std::string with_seed_line(const std::string& line) { return replace_line(quick_scenario_text(), "seed =", line); }
 
-std::string read_text(const fs::path& path) {
-  std::ifstream file(path);
-  std::stringstream text;
-  text << file.rdbuf();
-  return text.str();
-}
+using ellc::test::read_text;
 
 void expect_contains(const std::string& message, const std::vector<std::string>& fragments) {
   for (const auto& fragment : fragments) EXPECT_NE(message.find(fragment), std::string::npos) << message;
