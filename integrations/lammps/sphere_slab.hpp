@@ -11,10 +11,10 @@
 // (δ/R ≈ 2 %). Frictionless spheres need a lattice that is stable under compression: a
 // simple-cubic one shears and collapses within a few hundred steps, an fcc one holds. z is
 // bounded, in both engines, by planes 3 cells away from the slab that no sphere reaches during a
-// run (LAMMPS: boundary p p f; the engine: its two walls): both see free surfaces and no wall contacts, so the engine's box (periodic in x, y
-// only) and LAMMPS's agree without a wall model. The engine first settles the lattice (global
+// run (LAMMPS: boundary p p f; the engine: its two walls): both see free surfaces and no wall contacts, so the engine's
+// box (periodic in x, y only) and LAMMPS's agree without a wall model. The engine first settles the lattice (global
 // drag, make_slab); the slab then drifts along x at a speed that covers half the skin in 50
-// steps, so both engines rebuild their neighbour lists about every 50 steps. Along z the settled
+// steps, so both engines rebuild their neighbour lists during a run (11–12 times in 300 steps). Along z the settled
 // slab carries no load, so its bonds with a z component touch only just: the contact count
 // drifts during a run (7.5 → 6.0 per sphere in bench_lammps), the same in both engines.
 //
@@ -51,11 +51,11 @@ struct SphereSlab {
   std::vector<Eigen::Vector3d> centre;
   std::vector<double> radius;
   std::vector<Eigen::Vector3d> velocity;
-  std::vector<double> mass;  // ng: the engine's (ParticleSet::add), given to LAMMPS as it is
-  double lx = 0.0, ly = 0.0;      // periodic
+  std::vector<double> mass;          // ng: the engine's (ParticleSet::add), given to LAMMPS as it is
+  double lx = 0.0, ly = 0.0;         // periodic
   double z_low = 0.0, z_high = 0.0;  // the bounding planes
-  double dt = 0.0;                // µs: the engine's stable time step for these spheres
-  double skin = 0.0;              // µm: the engine's default, 0.2 of the mean radius
+  double dt = 0.0;                   // µs: the engine's stable time step for these spheres
+  double skin = 0.0;                 // µm: the engine's default, 0.2 of the mean radius
 };
 
 // The built-in engine on the slab: plain Hertz, undamped, frictionless, one thread (no adaptive
@@ -71,7 +71,7 @@ inline std::unique_ptr<ellc::engine::Simulation> engine_simulation(const SphereS
   }
   EngineSettings settings;
   settings.contact.material = {kYoungs, kPoisson, 1.0};  // Y: unused by the hertz normal model
-  settings.contact.model = ellc::ContactModel{};           // no damping, no friction
+  settings.contact.model = ellc::ContactModel{};         // no damping, no friction
   settings.contact.model.normal = ellc::NormalModel::hertz;
   settings.contact.wall_friction = 0.0;
   settings.box = {slab.lx, slab.ly};
@@ -101,10 +101,10 @@ inline SphereSlab make_slab(int nx, int ny, int nz, int settle_steps, std::uint3
     for (int j = 0; j < ny; ++j)
       for (int i = 0; i < nx; ++i)
         for (const Eigen::Vector3d& offset : basis) {
-        const Eigen::Vector3d site = spacing * (Eigen::Vector3d(i, j, k) + offset);
-        slab.centre.push_back(site + 0.005 * Eigen::Vector3d(unit(random), unit(random), unit(random)));
-        slab.radius.push_back(kMeanRadius * (1.0 + 0.002 * unit(random)));
-      }
+          const Eigen::Vector3d site = spacing * (Eigen::Vector3d(i, j, k) + offset);
+          slab.centre.push_back(site + 0.005 * Eigen::Vector3d(unit(random), unit(random), unit(random)));
+          slab.radius.push_back(kMeanRadius * (1.0 + 0.002 * unit(random)));
+        }
   ellc::engine::ParticleSet probe;
   for (std::size_t n = 0; n < slab.radius.size(); ++n)
     probe.add(static_cast<std::uint32_t>(n), Eigen::Vector3d::Constant(slab.radius[n]), kDensity, slab.centre[n],
@@ -122,8 +122,7 @@ inline SphereSlab make_slab(int nx, int ny, int nz, int settle_steps, std::uint3
   }
   slab.velocity.clear();
   const double speed = 0.5 * slab.skin / (50.0 * slab.dt);
-  for (std::size_t n = 0; n < slab.radius.size(); ++n)
-    slab.velocity.push_back(speed * Eigen::Vector3d::UnitX());
+  for (std::size_t n = 0; n < slab.radius.size(); ++n) slab.velocity.push_back(speed * Eigen::Vector3d::UnitX());
   return slab;
 }
 
@@ -141,8 +140,8 @@ inline void setup_lammps(LAMMPS_NS::LAMMPS* lmp, const SphereSlab& slab) {
   run("atom_modify map array");
   run("boundary p p f");
   run("comm_modify vel yes");
-  run("region box block 0 " + text(slab.lx) + " 0 " + text(slab.ly) + " " + text(slab.z_low) + " " +
-      text(slab.z_high) + " units box");
+  run("region box block 0 " + text(slab.lx) + " 0 " + text(slab.ly) + " " + text(slab.z_low) + " " + text(slab.z_high) +
+      " units box");
   run("create_box 1 box");
   const auto count = static_cast<int>(slab.radius.size());
   std::vector<int> ids(slab.radius.size()), types(slab.radius.size(), 1);
