@@ -11,12 +11,13 @@
 // (δ/R ≈ 2 %). Frictionless spheres need a lattice that is stable under compression: a
 // simple-cubic one shears and collapses within a few hundred steps, an fcc one holds. z is
 // bounded, in both engines, by planes 3 cells away from the slab that no sphere reaches during a
-// run (LAMMPS: boundary p p f; the engine: its two walls): both see free surfaces and no wall contacts, so the engine's
-// box (periodic in x, y only) and LAMMPS's agree without a wall model. The engine first settles the lattice (global
-// drag, make_slab); the slab then drifts along x at a speed that covers half the skin in 50
-// steps, so both engines rebuild their neighbour lists during a run (11–12 times in 300 steps). Along z the settled
-// slab carries no load, so its bonds with a z component touch only just: the contact count
-// drifts during a run (7.5 → 6.0 per sphere in bench_lammps), the same in both engines.
+// run (LAMMPS: boundary p p f; the engine: its two walls). Both see free surfaces and no wall
+// contacts, so the engine's box (periodic in x, y only) and LAMMPS's agree without a wall model.
+// The engine first settles the lattice (global drag, make_slab). The slab then drifts along x at
+// a speed that covers half the skin in 50 steps, so both engines rebuild their neighbour lists
+// during a run (11–12 times in 300 steps). Along z the settled slab carries no load, so its bonds
+// with a z component only just touch: the contact count drifts during a run (7.5 → 6.0 per
+// sphere in bench_lammps), the same in both engines.
 //
 // Contact model: plain Hertz, F = (4/3) E_e sqrt(R_e) δ^{3/2}, no damping, no friction. Both
 // engines mix E_e by eq. (3) of docs/model.md: E_e = [(1 − ν²)/E + (1 − ν²)/E]⁻¹ = E / (2(1 − ν²))
