@@ -9,10 +9,23 @@
 // fraction 0.6). Ellipsoids: semi-axes 6 x 5 x 4.2 um, random orientations, Becker-Kamlah normal
 // law. Spheres: radius (6 * 5 * 4.2)^(1/3) = 5.01 um, Hertz. Each iteration runs 20 steps after a
 // 200-step settling run; counters give particle-timesteps/s and contacts per particle.
+//
+// SpheresEngineVsGranular: the built-in engine (engine::Simulation, normal = hertz) against
+// pair_style granular hertz/material on one sphere packing (integrations/lammps/sphere_slab.hpp:
+// fcc, 13 x 13 x 13 cubic cells = 8788 spheres, periodic in x and y, free surfaces in z; undamped, frictionless Hertz;
+// the same positions, radii, masses, velocities, time step and skin), one thread each (omp_set_num_threads(1)). Each
+// iteration runs 20 steps of each engine, interleaved, so that the machine's load falls on both;
+// the ratio engine / LAMMPS is a counter of the same run (thread CPU time, and wall time).
+// ELLC_BENCH_SPHERES_CELLS overrides the 13 cells per side.
 
 #include <benchmark/benchmark.h>
 #include <mpi.h>
+#include <omp.h>
 
+#include <time.h>
+
+#include <chrono>
+#include <cstdlib>
 #include <memory>
 #include <string>
 #include <vector>
@@ -20,6 +33,7 @@
 #include "lammps_includes.hpp"
 #include "pair_ellipsoid_bk.hpp"
 #include "register_styles.hpp"
+#include "sphere_slab.hpp"
 
 #include <input.h>
 
@@ -27,6 +41,7 @@ namespace {
 
 constexpr int kCells = 10;
 constexpr int kStepsPerIteration = 20;
+constexpr int kSettleSteps = 1500;  // SpheresEngineVsGranular: untimed, engine only (sphere_slab.hpp)
 
 struct Session {
   LAMMPS_NS::LAMMPS* lmp = nullptr;
@@ -134,14 +149,66 @@ void GranularHertzMaterial(benchmark::State& state) {
   report(state, contacts / (kCells * kCells * kCells));
 }
 
+// CPU time of the calling thread, s (both engines run on this thread only).
+double thread_cpu_seconds() {
+  timespec now{};
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &now);
+  return static_cast<double>(now.tv_sec) + 1e-9 * static_cast<double>(now.tv_nsec);
+}
+
+void SpheresEngineVsGranular(benchmark::State& state) {
+  namespace slab_ns = ellc_lammps::sphere_slab;
+  const char* cells_text = std::getenv("ELLC_BENCH_SPHERES_CELLS");
+  const int cells = cells_text != nullptr ? std::atoi(cells_text) : 13;
+  const slab_ns::SphereSlab slab = slab_ns::make_slab(cells, cells, cells, kSettleSteps);
+  const auto engine = slab_ns::engine_simulation(slab);
+  state.counters["contacts_per_particle_at_start"] =
+      2.0 * static_cast<double>(engine->contact_counts().particle_contacts) / static_cast<double>(slab.radius.size());
+  const Session session;
+  slab_ns::setup_lammps(session.lmp, slab);
+  const std::string step = "run " + std::to_string(kStepsPerIteration) + " pre no post no";
+  double engine_cpu = 0.0, lammps_cpu = 0.0, engine_wall = 0.0, lammps_wall = 0.0;
+  using Clock = std::chrono::steady_clock;
+  for (auto _ : state) {
+    double cpu = thread_cpu_seconds();
+    auto wall = Clock::now();
+    for (int k = 0; k < kStepsPerIteration; ++k) engine->step();
+    engine_cpu += thread_cpu_seconds() - cpu;
+    engine_wall += std::chrono::duration<double>(Clock::now() - wall).count();
+    cpu = thread_cpu_seconds();
+    wall = Clock::now();
+    session.run({step});
+    lammps_cpu += thread_cpu_seconds() - cpu;
+    lammps_wall += std::chrono::duration<double>(Clock::now() - wall).count();
+  }
+  const double particle_steps =
+      static_cast<double>(slab.radius.size()) * kStepsPerIteration * static_cast<double>(state.iterations());
+  state.counters["engine_particle_steps_per_cpu_s"] = particle_steps / engine_cpu;
+  state.counters["lammps_particle_steps_per_cpu_s"] = particle_steps / lammps_cpu;
+  state.counters["ratio_engine_over_lammps_cpu"] = lammps_cpu / engine_cpu;
+  state.counters["ratio_engine_over_lammps_wall"] = lammps_wall / engine_wall;
+  state.counters["particles"] = static_cast<double>(slab.radius.size());
+  state.counters["engine_threads"] = engine->thread_count();
+  state.counters["engine_rebuilds"] = static_cast<double>(engine->neighbour_rebuilds());
+  state.counters["lammps_rebuilds"] = static_cast<double>(session.lmp->neighbor->ncalls);
+  state.counters["engine_contacts_per_particle"] =
+      2.0 * static_cast<double>(engine->contact_counts().particle_contacts) / static_cast<double>(slab.radius.size());
+  session.run({"run 0"});
+  state.counters["lammps_contacts_per_particle"] = slab_ns::lammps_contacts_per_particle(session.lmp);
+}
+
 BENCHMARK(EllipsoidBK)->Unit(benchmark::kMillisecond);
 BENCHMARK(EllipsoidBKEngineSolve)->Unit(benchmark::kMillisecond);
 BENCHMARK(EllipsoidBKWalls)->Unit(benchmark::kMillisecond);
 BENCHMARK(GranularHertzMaterial)->Unit(benchmark::kMillisecond);
+// 15 iterations: 300 steps of each engine, as bench_dem times.
+BENCHMARK(SpheresEngineVsGranular)->Unit(benchmark::kMillisecond)->Iterations(15)->UseRealTime();
 
 }  // namespace
 
 int main(int argc, char** argv) {
+  omp_set_num_threads(
+      1);  // one thread each (omp_set_num_threads(1)). the engine's OpenMP (LAMMPS runs serial, no OMP styles)
   MPI_Init(&argc, &argv);
   benchmark::Initialize(&argc, argv);
   benchmark::RunSpecifiedBenchmarks();
