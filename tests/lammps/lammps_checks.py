@@ -369,6 +369,18 @@ def with_calendering(text, **keys):
 STAGE_END = re.compile(r"^ellc: (hold|relax) ended after (\S+) us, unbalanced-force ratio (\S+)$", re.M)
 
 
+def stage_sequence(series):
+    """The phases of a time series in order, each once; without the trailing "done" row that the
+    last run's end writes only when it falls on a csv_every step."""
+    phases = []
+    for row in series:
+        if not phases or phases[-1] != row["phase"]:
+            phases.append(row["phase"])
+    if phases and phases[-1] == "done":
+        phases.pop()
+    return phases
+
+
 def check_equilibrium_ends(args, text, work):
     """The exported hold and relax end like the built-in engine's: past their minimum time, on the
     unbalanced-force ratio (below equilibrium_ratio), or stop with the engine's error at their limit;
@@ -426,12 +438,7 @@ def check_equilibrium_ends(args, text, work):
     run([args.ellc, "export-lammps", path, "-o", directory], work)
     output = []
     series = run_lammps(args, directory, 1, output)
-    phases = []
-    for row in series:
-        if not phases or phases[-1] != row["phase"]:
-            phases.append(row["phase"])
-    if phases[-1] == "done":  # a row of the last run's end, when it falls on a csv_every step
-        phases.pop()
+    phases = stage_sequence(series)
     if phases != ["load", "hold", "unload", "relax"]:
         sys.exit(f"release = servo: phases {phases}, expected load, hold, unload, relax")
     ends = STAGE_END.findall(output[0])
@@ -479,12 +486,7 @@ def check_export(args):
     missing = [name for name in ENGINE_COLUMNS if name not in engine_header]
     if missing:
         sys.exit(f"the built-in engine's timeseries.csv has no column {missing}")
-    phases = []
-    for row in series:
-        if not phases or phases[-1] != row["phase"]:
-            phases.append(row["phase"])
-    if phases[-1] == "done":  # a row of the last run's end, when it falls on a csv_every step
-        phases.pop()
+    phases = stage_sequence(series)
     if phases != ["load", "hold", "unload"]:
         sys.exit(f"phases {phases}, expected load, hold, unload (then done)")
     target = float(args.target)
