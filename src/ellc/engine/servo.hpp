@@ -33,11 +33,11 @@ inline constexpr double kServoStepFraction = 0.5;
 // of its contacts at the last force evaluation (0: no contacts, no cap).
 [[nodiscard]] inline double servo_speed(const PlateServo& servo, double pressure, double stiffness_per_area,
                                         double dt) noexcept {
-  const double error = (servo.target - pressure) / servo.reference;
-  if (std::abs(servo.target - pressure) <= servo.tolerance * servo.target) return 0.0;
-  const double speed = servo.rate * std::clamp(servo.gain * error, -1.0, 1.0);
+  const double difference = servo.target - pressure;
+  if (std::abs(difference) <= servo.tolerance * servo.target) return 0.0;
+  const double speed = servo.rate * std::clamp(servo.gain * (difference / servo.reference), -1.0, 1.0);
   if (!(stiffness_per_area > 0.0 && dt > 0.0)) return speed;
-  const double limit = kServoStepFraction * std::abs(servo.target - pressure) / (stiffness_per_area * dt);
+  const double limit = kServoStepFraction * std::abs(difference) / (stiffness_per_area * dt);
   return std::clamp(speed, -limit, limit);
 }
 

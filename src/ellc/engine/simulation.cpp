@@ -396,11 +396,13 @@ void Simulation::accumulate() {
   auto& p = particles_;
   const std::size_t count = p.size();
   for (auto& wall : walls_) wall.force.setZero();
+  wall_stiffness_.fill(0.0);
   for (int w = 0; w < 2; ++w) {
     const auto& results = wall_results_[w];
     for (std::size_t slot = 0; slot < results.size(); ++slot) {
       if (wall_reported_[w][slot] == 0) continue;
       walls_[w].force += results[slot].force_on_wall;
+      wall_stiffness_[w] += results[slot].normal_stiffness;
       released_work_ += results[slot].released_work;
       damping_dissipation_ += results[slot].damping_dissipation;
       friction_dissipation_ += results[slot].friction_dissipation;
@@ -651,13 +653,6 @@ double Simulation::wall_pressure(int wall) const noexcept {
 double Simulation::porosity() const noexcept {
   const double volume = settings_.box.lx * settings_.box.ly * gap();
   return volume > 0.0 ? 1.0 - particles_.total_volume() / volume : 1.0;
-}
-
-double Simulation::wall_stiffness(int wall) const noexcept {
-  double stiffness = 0.0;
-  for (std::size_t slot = 0; slot < wall_results_[wall].size(); ++slot)
-    if (wall_reported_[wall][slot] != 0) stiffness += wall_results_[wall][slot].normal_stiffness;
-  return stiffness;
 }
 
 std::size_t Simulation::wall_contact_count(int wall) const noexcept {

@@ -145,7 +145,7 @@ class Simulation {
   [[nodiscard]] std::size_t wall_contact_count(int wall) const noexcept;
   // Σ k_n of the wall's contacts at the last force evaluation (µN/µm), for a servo's loop gain
   // (engine/servo.hpp). 0 before the first step after a restart.
-  [[nodiscard]] double wall_stiffness(int wall) const noexcept;
+  [[nodiscard]] double wall_stiffness(int wall) const noexcept { return wall_stiffness_[wall]; }
   [[nodiscard]] double highest_point() const noexcept;  // max z of the bounding spheres
 
   // Full state (particles, walls, contact histories, neighbour list, counters) for restart.
@@ -169,7 +169,7 @@ class Simulation {
   };
   struct WallResult : ContactTally {
     Eigen::Vector3d force_on_wall = Eigen::Vector3d::Zero();
-    double normal_stiffness = 0.0;  // k_n (ContactForce); derived each step, not in checkpoints
+    double normal_stiffness = 0.0;  // k_n (ContactForce), summed into wall_stiffness_; not in checkpoints
   };
   // A result slot is only written when this step has something to say (a contact, released
   // plastic work, a failure); a byte per slot (1 = written this step) says which slots are
@@ -253,6 +253,7 @@ class Simulation {
   double damping_dissipation_ = 0.0;
   double friction_dissipation_ = 0.0;
   std::uint64_t failures_ = 0;
+  std::array<double, 2> wall_stiffness_{};  // Σ k_n per wall, summed in accumulate(); not state
   std::uint64_t step_ = 0;
   std::uint64_t rebuilds_ = 0;
   double time_ = 0.0;

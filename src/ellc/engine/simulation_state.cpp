@@ -317,6 +317,7 @@ void Simulation::read_state(std::istream& in) {
     corrupt(error.what());
   }
   prepare_derived_arrays();
+  wall_stiffness_.fill(0.0);  // derived by the next step's accumulate(), as the servo expects
 }
 
 }  // namespace ellc::engine
