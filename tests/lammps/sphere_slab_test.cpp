@@ -13,29 +13,17 @@
 #include <string>
 #include <vector>
 
+#include "lammps_session.hpp"
 #include "sphere_slab.hpp"
 
 namespace {
 
 using namespace ellc_lammps::sphere_slab;
 
-struct Lammps {
-  LAMMPS_NS::LAMMPS* lmp = nullptr;
-  Lammps() {
-    std::vector<std::string> words{"sphere_slab_test", "-log", "none", "-screen", "none", "-nocite"};
-    std::vector<char*> argv;
-    for (auto& word : words) argv.push_back(word.data());
-    lmp = new LAMMPS_NS::LAMMPS(static_cast<int>(argv.size()), argv.data(), MPI_COMM_WORLD);
-  }
-  ~Lammps() { delete lmp; }
-  Lammps(const Lammps&) = delete;
-  Lammps& operator=(const Lammps&) = delete;
-};
-
 TEST(SphereSlab, EnginesAgreeAtStepZero) {
   const SphereSlab slab = make_slab(3, 3, 2, 100);
   const auto engine = engine_simulation(slab);
-  const Lammps lammps;
+  const ellc_lammps::LammpsSession lammps;
   setup_lammps(lammps.lmp, slab);
 
   // Every engine contact against the closed form, from the centres alone.

@@ -31,6 +31,7 @@
 #include <vector>
 
 #include "lammps_includes.hpp"
+#include "lammps_session.hpp"
 #include "pair_ellipsoid_bk.hpp"
 #include "register_styles.hpp"
 #include "sphere_slab.hpp"
@@ -43,22 +44,7 @@ constexpr int kCells = 10;
 constexpr int kStepsPerIteration = 20;
 constexpr int kSettleSteps = 1500;  // SpheresEngineVsGranular: untimed, engine only (sphere_slab.hpp)
 
-struct Session {
-  LAMMPS_NS::LAMMPS* lmp = nullptr;
-  Session() {
-    std::vector<std::string> words{"bench_lammps", "-log", "none", "-screen", "none", "-nocite"};
-    std::vector<char*> argv;
-    for (auto& word : words) argv.push_back(word.data());
-    lmp = new LAMMPS_NS::LAMMPS(static_cast<int>(argv.size()), argv.data(), MPI_COMM_WORLD);
-    ellc_lammps::register_styles(lmp, ellc_lammps::built_against_version());
-  }
-  ~Session() { delete lmp; }
-  Session(const Session&) = delete;
-  Session& operator=(const Session&) = delete;
-  void run(const std::vector<std::string>& commands) const {
-    for (const auto& command : commands) lmp->input->one(command);
-  }
-};
+using Session = ellc_lammps::LammpsSession;
 
 std::vector<std::string> lattice(const std::string& atom_style, const std::string& boundary = "p p p") {
   const std::string n = std::to_string(kCells);
