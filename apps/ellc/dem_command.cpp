@@ -426,17 +426,18 @@ void run_members(const DemOptions& options, const scenario::Scenario& loaded, co
 
 // The planned work (scenario/run_plan.hpp), printed before anything is built; beyond the stated
 // limits only with --force, and never what the engine cannot represent.
-void check_plan(const DemOptions& options, const scenario::Scenario& loaded) {
-  const scenario::RunPlan plan = scenario::plan_run(loaded);
+scenario::RunPlan check_plan(const DemOptions& options, const scenario::Scenario& loaded) {
+  scenario::RunPlan plan = scenario::plan_run(loaded);
   if (!options.quiet && !options.check)  // --check prints it as its result
     std::fprintf(stderr, "ellc dem: plan: %s\n", scenario::describe_plan(plan).c_str());
   if (!plan.impossible.empty())
     throw InputError(loaded.source, plan.impossible.front() + " (refused even with --force)");
-  if (plan.beyond_limits.empty()) return;
+  if (plan.beyond_limits.empty()) return plan;
   if (!options.force)
     throw InputError(loaded.source, plan.beyond_limits.front() + "; run with --force to start it anyway");
   for (const auto& reason : plan.beyond_limits)
     std::fprintf(stderr, "ellc: warning: %s; running anyway (--force)\n", reason.c_str());
+  return plan;
 }
 
 void run_dem(const DemOptions& options) {
@@ -446,10 +447,9 @@ void run_dem(const DemOptions& options) {
 #endif
   scenario::Scenario loaded = scenario::read_scenario(options.scenario_path);
   const std::vector<const ComparedLaw*> laws = compared_laws(options);
-  check_plan(options, loaded);
+  const scenario::RunPlan plan = check_plan(options, loaded);
   if (options.check) {
-    std::printf("ellc dem: %s is valid: %s\n", options.scenario_path.c_str(),
-                scenario::describe_plan(scenario::plan_run(loaded)).c_str());
+    std::printf("ellc dem: %s is valid: %s\n", options.scenario_path.c_str(), scenario::describe_plan(plan).c_str());
     for (const auto& warning : loaded.warnings) std::fprintf(stderr, "ellc: warning: %s\n", warning.c_str());
     return;
   }
