@@ -8,7 +8,9 @@
 #include <fstream>
 #include <limits>
 #include <sstream>
+#include <string>
 #include <utility>
+#include <vector>
 
 #include "ellc/cases/case_file.hpp"
 #include "ellc/contact/contact_parameters.hpp"
@@ -160,14 +162,10 @@ void read_packing_file(TableReader& table, Scenario& scenario, bool several_spec
   if (!several_species) measure_imported_packing(scenario);
 }
 
-void read_packing(TableReader& table, Scenario& scenario) {
-  if (table.has("file")) {
-    read_packing_file(table, scenario, false);
-    return;
-  }
-  PackingSpec& spec = scenario.packing;
-  spec.count = static_cast<std::size_t>(table.integer_at_least("count", 1));
-  if (spec.count > 50'000'000) table.fail("count", std::to_string(spec.count), "at most 50000000 particles");
+// The size and shape distribution of one population of particles: [packing] of a one-species
+// scenario, or one [[species]] table (PackingSpec and SpeciesSpec name these fields alike).
+template <typename Population>
+void read_size_and_shape(TableReader& table, Population& spec, std::vector<std::string>& warnings) {
   spec.mean_radius = table.positive("mean_radius");
   if (spec.mean_radius > kMaxLength) table.fail("mean_radius", spec.mean_radius, "a radius in (0, 1e100] µm");
   spec.radius_spread = non_negative_or(table, "radius_spread", 0.0);
@@ -181,9 +179,19 @@ void read_packing(TableReader& table, Scenario& scenario) {
     spec.aspect_max = (*aspect)[1];
   }
   if (!spec.spheres && (spec.aspect_min < 0.5 * (1 - 1e-12) || spec.aspect_max > 2.0 * (1 + 1e-12)))
-    scenario.warnings.push_back(
-        "packing.aspect extends outside the calibrated range 1:[0.5..2]:[0.5..2] of the "
-        "transition fits (eq. 52-53); the law still evaluates");
+    warnings.push_back(table.field("aspect") +
+                       " extends outside the calibrated range 1:[0.5..2]:[0.5..2] of the "
+                       "transition fits (eq. 52-53); the law still evaluates");
+}
+
+void read_particle_count(TableReader& table, PackingSpec& spec) {
+  spec.count = static_cast<std::size_t>(table.integer_at_least("count", 1));
+  if (spec.count > 50'000'000) table.fail("count", std::to_string(spec.count), "at most 50000000 particles");
+}
+
+// [packing]'s seed(s), density and insertion fraction, with one species or several; then no other key.
+void read_seeds_density_and_insertion(TableReader& table, Scenario& scenario) {
+  PackingSpec& spec = scenario.packing;
   spec.seed = static_cast<std::uint64_t>(table.integer_at_least("seed", 0, 1));
   scenario.seeds = read_packing_seeds(table);  // an ensemble over packing seeds (ensemble.hpp)
   scenario.material_density = table.positive("density");
@@ -193,10 +201,19 @@ void read_packing(TableReader& table, Scenario& scenario) {
   table.finish();
 }
 
+void read_packing(TableReader& table, Scenario& scenario) {
+  if (table.has("file")) {
+    read_packing_file(table, scenario, false);
+    return;
+  }
+  read_particle_count(table, scenario.packing);
+  read_size_and_shape(table, scenario.packing, scenario.warnings);
+  read_seeds_density_and_insertion(table, scenario);
+}
+
 // [packing] of a scenario with [[species]]: the blend's count, seed(s), density and insertion; the
 // size and shape distributions are the species'.
 void read_blend_packing(TableReader& table, Scenario& scenario) {
-  PackingSpec& spec = scenario.packing;
   for (const char* key : {"mean_radius", "radius_spread", "shape", "aspect"})
     if (table.has(key))
       table.fail(key, "given", std::string("[[species]] ") + key + ": with several species, each gives its own");
@@ -204,15 +221,8 @@ void read_blend_packing(TableReader& table, Scenario& scenario) {
     read_packing_file(table, scenario, true);
     return;
   }
-  spec.count = static_cast<std::size_t>(table.integer_at_least("count", 1));
-  if (spec.count > 50'000'000) table.fail("count", std::to_string(spec.count), "at most 50000000 particles");
-  spec.seed = static_cast<std::uint64_t>(table.integer_at_least("seed", 0, 1));
-  scenario.seeds = read_packing_seeds(table);
-  scenario.material_density = table.positive("density");
-  spec.insertion_fraction = positive_or(table, "insertion_fraction", spec.insertion_fraction);
-  if (spec.insertion_fraction > 0.5)
-    table.fail("insertion_fraction", spec.insertion_fraction, "a solid fraction in (0, 0.5]");
-  table.finish();
+  read_particle_count(table, scenario.packing);
+  read_seeds_density_and_insertion(table, scenario);
 }
 
 // One [[species]] table: name, fraction, its size and shape distribution (the keys of [packing] in
@@ -223,23 +233,7 @@ SpeciesSpec read_species(TableReader& table, Scenario& scenario, Material& mater
   species.fraction = table.number("fraction");
   if (!(species.fraction > 0.0 && species.fraction <= 1.0))
     table.fail("fraction", species.fraction, "a number fraction in (0, 1]");
-  species.mean_radius = table.positive("mean_radius");
-  if (species.mean_radius > kMaxLength) table.fail("mean_radius", species.mean_radius, "a radius in (0, 1e100] µm");
-  species.radius_spread = non_negative_or(table, "radius_spread", 0.0);
-  if (species.radius_spread >= 0.45)
-    table.fail("radius_spread", species.radius_spread, "a relative spread in [0, 0.45)");
-  species.spheres = table.choice("shape", {"ellipsoid", "sphere"}, "ellipsoid") == "sphere";
-  if (const auto aspect = table.optional_numbers("aspect", 2)) {
-    if ((*aspect)[0] <= 0.0 || (*aspect)[1] < (*aspect)[0])
-      table.fail("aspect", "[" + format_number((*aspect)[0]) + ", " + format_number((*aspect)[1]) + "]",
-                 "[min, max] with 0 < min <= max (ratios b/a and c/a)");
-    species.aspect_min = (*aspect)[0];
-    species.aspect_max = (*aspect)[1];
-  }
-  if (!species.spheres && (species.aspect_min < 0.5 * (1 - 1e-12) || species.aspect_max > 2.0 * (1 + 1e-12)))
-    scenario.warnings.push_back(table.path() +
-                                ".aspect extends outside the calibrated range 1:[0.5..2]:[0.5..2] of the "
-                                "transition fits (eq. 52-53); the law still evaluates");
+  read_size_and_shape(table, species, scenario.warnings);
   species.density = positive_or(table, "density", scenario.material_density);
   {
     auto material_table = table.table("material");
