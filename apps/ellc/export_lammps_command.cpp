@@ -243,7 +243,7 @@ void write_input(const std::string& path, const std::string& data_name, const sc
   };
   const auto steps = [&](double time) { return std::to_string(static_cast<long long>(std::ceil(time / dt))); };
 
-  const double hold_limit = c.max_hold_time > 0.0 ? c.max_hold_time : 5.0 * c.hold_time;
+  const double hold_limit = c.hold_time_limit();
   out << "# hold: " << (c.servo_hold ? "the servo holds the target pressure" : "the plate stops")
       << " with rest_drag_rate, at least hold_time, then until\n# the unbalanced-force ratio is below "
          "equilibrium_ratio (max_hold_time)\nvariable     phase string hold\n"
@@ -263,7 +263,7 @@ void write_input(const std::string& path, const std::string& data_name, const sc
   out << "print        \"ellc: hold ended after $(time-v_hold_start:%.17g) us, unbalanced-force ratio "
          "$(v_unbalanced_force_ratio:%.17g)\"\n\n";
 
-  const bool relax = c.servo_release || c.relax_time > 0.0;
+  const bool relax = c.relaxes();
   out << "# unload: "
       << (c.servo_release ? "the servo lowers the plate pressure to p_r = release_pressure_fraction x the held pressure"
                           : "the plate lifts until it loses contact (pressure below release_fraction of the hold's)")
@@ -309,9 +309,7 @@ void write_input(const std::string& path, const std::string& data_name, const sc
         << "run          " << unload_steps << "\nunfix        halt\n";
   }
   if (relax) {
-    const double relax_limit = c.max_relax_time > 0.0 ? c.max_relax_time
-                               : c.servo_release      ? 5.0 * std::max(c.relax_time, c.hold_time)
-                                                      : 5.0 * c.relax_time;
+    const double relax_limit = c.relax_time_limit();
     out << "\n# relax: " << (c.servo_release ? "the servo holds p_r" : "plate at rest")
         << ", rest_drag_rate, at least relax_time, then until the unbalanced-force ratio\n# is below "
            "equilibrium_ratio"

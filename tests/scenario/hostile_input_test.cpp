@@ -72,6 +72,26 @@ TEST(RunPlan, RunsThatWouldNeverEndAreRefusedByField) {
               mentions(plan.beyond_limits, "packing.insertion_fraction"));
 }
 
+// The plan budgets each phase at the limit the protocol enforces (CalenderingSpec's
+// hold_time_limit and relax_time_limit). Under the servo release the relaxation may last
+// 5 × max(relax_time, hold_time); the plan once budgeted 5 × relax_time there.
+TEST(RunPlan, BudgetsTheHoldAndTheServoReleaseAtTheProtocolsLimits) {
+  const auto plan_with_hold = [](double hold_time) {
+    std::string text = replace_line(quick_scenario_text(), "max_relax_time", "max_relax_time = 0.0");
+    text = replace_line(text, "hold_time", "hold_time = " + std::to_string(hold_time));
+    return plan_run(quick_scenario(text));
+  };
+  const Scenario scenario =
+      quick_scenario(replace_line(quick_scenario_text(), "max_relax_time", "max_relax_time = 0.0"));
+  ASSERT_TRUE(scenario.calendering.servo_release);
+  const double relax_time = scenario.calendering.relax_time;
+  const double hold_short = relax_time;  // both limits 5 × relax_time
+  const double hold_long = 4.0 * relax_time;
+  const double added = plan_with_hold(hold_long).simulated_time - plan_with_hold(hold_short).simulated_time;
+  // The hold's limit grows by 5 Δ, and so does the servo release's relaxation limit.
+  EXPECT_NEAR(added, 10.0 * (hold_long - hold_short), 1e-9 * added);
+}
+
 // mean_radius = 1e-4 µm in a 42 µm box once overflowed the cell grid's int and crashed: refused,
 // even with --force, naming the fields.
 TEST(RunPlan, CellGridBeyondItsIndexIsRefusedNotCrashed) {

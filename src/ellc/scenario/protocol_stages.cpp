@@ -261,7 +261,7 @@ std::optional<Phase> LoadingProtocol::after_step(Simulation& sim) {
       if (sim.time() < state_.phase_end_time) break;
       const double ratio = sim.unbalanced_force_ratio();
       if (ratio < spec.equilibrium_ratio) return Phase::unload;
-      const double limit = spec.max_hold_time > 0.0 ? spec.max_hold_time : 5.0 * spec.hold_time;
+      const double limit = spec.hold_time_limit();
       if (sim.time() - state_.hold_start_time >= limit)
         throw ProtocolError("the loaded state did not reach equilibrium: after a hold of " +
                             format_number(sim.time() - state_.hold_start_time) +
@@ -289,9 +289,7 @@ std::optional<Phase> LoadingProtocol::after_step(Simulation& sim) {
       if (sim.time() - state_.relax_start_time < spec.relax_time) break;
       const double ratio = sim.unbalanced_force_ratio();
       if (ratio < spec.equilibrium_ratio && at_rest_pressure) return Phase::done;
-      const double limit = spec.max_relax_time > 0.0 ? spec.max_relax_time
-                           : spec.servo_release      ? 5.0 * std::max(spec.relax_time, spec.hold_time)
-                                                     : 5.0 * spec.relax_time;
+      const double limit = spec.relax_time_limit();
       if (sim.time() - state_.relax_start_time >= limit)
         throw ProtocolError("the released state did not reach equilibrium: after " +
                             format_number(sim.time() - state_.relax_start_time) +

@@ -91,10 +91,8 @@ RunPlan plan_run(const Scenario& scenario) {
   const double travel = std::max(start - end, 0.0);
   const double load_speed =
       calendering.approach_speed > 0.0 ? std::min(calendering.approach_speed, calendering.speed) : calendering.speed;
-  const double hold = calendering.max_hold_time > 0.0 ? calendering.max_hold_time : 5.0 * calendering.hold_time;
-  const double relax = calendering.relax_time > 0.0 ? (calendering.max_relax_time > 0.0 ? calendering.max_relax_time
-                                                                                        : 5.0 * calendering.relax_time)
-                                                    : 0.0;
+  const double hold = calendering.hold_time_limit();
+  const double relax = calendering.relax_time_limit();
   const Phase phases[] = {
       {"settling", "settle.time, settle.max_time", scenario.settle.time > 0.0 ? scenario.settle.max_time : 0.0},
       {"loading",

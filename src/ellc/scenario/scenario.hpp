@@ -2,6 +2,7 @@
 // A DEM scenario as read from SCENARIO.toml (`ellc dem`): packing generation, settling and
 // calendering, plus the output cadence. Units: µm, µN, µs, ng (docs/engine.md).
 
+#include <algorithm>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -71,6 +72,17 @@ struct CalenderingSpec {
   bool servo_release = false;
   double release_pressure_fraction = 0.02;
   double release_tolerance = 0.05;  // relative to p_r
+
+  // One rule, for the protocol that enforces the limits, the run plan that budgets them and the
+  // LAMMPS export that writes them: the longest hold, whether there is a relaxation phase, and its
+  // longest duration, before a run stops for want of equilibrium.
+  [[nodiscard]] double hold_time_limit() const { return max_hold_time > 0.0 ? max_hold_time : 5.0 * hold_time; }
+  [[nodiscard]] bool relaxes() const { return servo_release || relax_time > 0.0; }
+  [[nodiscard]] double relax_time_limit() const {
+    if (!relaxes()) return 0.0;
+    if (max_relax_time > 0.0) return max_relax_time;
+    return servo_release ? 5.0 * std::max(relax_time, hold_time) : 5.0 * relax_time;
+  }
 };
 
 struct OutputSpec {
