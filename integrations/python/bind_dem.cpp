@@ -250,6 +250,13 @@ void bind_dem(py::module_& module) {
       .def_property_readonly("output_directory", [](const DemRun& run) { return run.runner().output_directory(); })
       .def_property_readonly("warnings", [](const DemRun& run) { return run.runner().warnings(); })
       .def_property_readonly("particle_count", [](const DemRun& run) { return run.sim().particles().size(); })
+      .def_property_readonly("species_names",
+                             [](const DemRun& run) {
+                               std::vector<std::string> names;
+                               for (const auto& species : scenario::species_of(run.runner().scenario().packing))
+                                 names.push_back(species.name);
+                               return names;
+                             })
       // Views: base object = the run, so the numpy array keeps it alive; the engine never
       // reallocates these vectors while stepping (tests/python/test_dem.py checks the addresses).
       .def(
@@ -267,6 +274,7 @@ void bind_dem(py::module_& module) {
             if (name == "mass") return scalar_view(p.mass, self);
             if (name == "mean_radius") return scalar_view(p.mean_radius, self);
             if (name == "inertia") return field_view(p.inertia, 3, self);
+            if (name == "species") return scalar_view(p.species, self);
             throw py::value_error("particle field '" + name + "' does not exist");
           },
           py::arg("name"))

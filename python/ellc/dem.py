@@ -260,12 +260,13 @@ class Particles:
 
     Rows are the engine's slots (``id`` names each particle; slots never move during a run). The
     views show the live state: they change as the run steps, and keep the run alive. Copy what
-    you want to keep (``run.particles.position.copy()``). The scenario has one material and one
-    shape distribution, so there is no species array.
+    you want to keep (``run.particles.position.copy()``). ``species`` indexes
+    :attr:`Run.species_names` (the scenario's ``[[species]]`` tables in their order; 0 everywhere
+    in a one-species packing).
     """
 
     FIELDS = ("id", "position", "orientation", "semi_axes", "velocity", "angular_velocity", "force", "torque", "mass",
-              "mean_radius", "inertia")
+              "mean_radius", "inertia", "species")
 
     def __init__(self, core):
         self._core = core
@@ -289,6 +290,8 @@ class Particles:
     mass = property(lambda self: self._field("mass"), doc="(N,) ng (after mass scaling)")
     mean_radius = property(lambda self: self._field("mean_radius"), doc="(N,) r̂ = (abc)^(1/3), µm (eq. 50)")
     inertia = property(lambda self: self._field("inertia"), doc="(N, 3) principal moments, body frame, ng µm²")
+    species = property(lambda self: self._field("species"),
+                       doc="uint16 (N,): each particle's species, an index into Run.species_names")
 
 
 class Contacts:
@@ -580,6 +583,8 @@ class Run:
     wall_positions = property(lambda self: np.array(self._core.wall_positions), doc="(floor, plate) z, µm")
     wall_velocities = property(lambda self: np.array(self._core.wall_velocities), doc="(floor, plate), µm/µs")
     output_directory = property(lambda self: self._core.output_directory)
+    species_names = property(lambda self: list(self._core.species_names),
+                             doc="the names of the [[species]] tables, in order; [''] for a one-species packing")
 
     @property
     def particles(self):

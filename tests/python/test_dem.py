@@ -129,11 +129,14 @@ def test_particles_are_read_only_views_tied_to_the_run():
     position = particles.position
     shapes = {"id": (N,), "position": (N, 3), "orientation": (N, 4), "semi_axes": (N, 3), "velocity": (N, 3),
               "angular_velocity": (N, 3), "force": (N, 3), "torque": (N, 3), "mass": (N,), "mean_radius": (N,),
-              "inertia": (N, 3)}
+              "inertia": (N, 3), "species": (N,)}
+    assert set(shapes) == set(dem.Particles.FIELDS)
+    dtypes = {"id": np.uint32, "species": np.uint16}
     for name, shape in shapes.items():
         array = getattr(particles, name)
         assert array.shape == shape and not array.flags.writeable, name
-        assert array.dtype == (np.uint32 if name == "id" else np.float64), name
+        assert array.dtype == dtypes.get(name, np.float64), name
+    assert run.species_names == [""] and not particles.species.any()  # one unnamed species
     assert sorted(particles.id.tolist()) == list(range(N))
     np.testing.assert_allclose(np.linalg.norm(particles.orientation, axis=1), 1.0, rtol=1e-12)
     np.testing.assert_allclose(np.prod(particles.semi_axes, axis=1) ** (1 / 3), particles.mean_radius, rtol=1e-12)
@@ -150,6 +153,24 @@ def test_particles_are_read_only_views_tied_to_the_run():
     # The view keeps the run alive.
     del run, particles
     assert position.base is not None and np.isfinite(position).all()
+
+
+def test_species_of_a_blend_have_their_own_counts_shapes_and_densities():
+    # tests/lammps/tiny_blend.toml: 24 particles, 3/4 NMC ellipsoids (4.7e-3 ng/µm³) and 1/4 spheres
+    # of an additive (1.8e-3 ng/µm³), both × mass_scaling 1e4.
+    run = dem.Run(SOURCE_DIR / "tests" / "lammps" / "tiny_blend.toml", write_files=False)
+    run.run(20)
+    particles = run.particles
+    assert run.species_names == ["NMC", "additive"]
+    assert np.bincount(particles.species, minlength=2).tolist() == [18, 6]
+    volume = 4.0 / 3.0 * math.pi * np.prod(particles.semi_axes, axis=1)
+    density = particles.mass / volume
+    additive = particles.species == 1
+    np.testing.assert_allclose(density[additive], 18.0, rtol=1e-12)
+    np.testing.assert_allclose(density[~additive], 47.0, rtol=1e-12)
+    axes = particles.semi_axes[additive]
+    np.testing.assert_allclose(axes, np.repeat(axes[:, :1], 3, axis=1), rtol=1e-15)  # spheres
+    assert np.ptp(particles.semi_axes[~additive], axis=1).min() > 0.0  # ellipsoids
 
 
 def test_contacts_are_consistent(whole):
