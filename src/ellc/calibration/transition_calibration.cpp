@@ -7,6 +7,7 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
+#include <iterator>
 #include <limits>
 #include <numbers>
 #include <optional>
@@ -326,6 +327,21 @@ double form_rms(const ExponentialFit& fit, std::span<const double> x, std::span<
   return x.empty() ? 0.0 : std::sqrt(sum / static_cast<double>(x.size()));
 }
 
+// The multi-start of the eq. (52) rate: after the prior's (or the default) rate, these starts
+// span the bounded range, so a fit does not stop in the local minimum nearest one guess.
+constexpr double kRateStarts[] = {-20.0, -12.0, -8.0, -5.0, -3.0, -1.5, -0.5, 0.5, 2.0};
+
+// Books one start's solve into `fit` (the first failure's message, converged if any start is) and
+// says whether it is the best so far, lowering best_cost if so.
+bool record_start(const ceres::Solver::Summary& summary, ExponentialFit& fit, double& best_cost) {
+  const bool converged = summary.termination_type == ceres::CONVERGENCE && std::isfinite(summary.final_cost);
+  if (!converged && fit.solver_report.empty()) fit.solver_report = summary.message;
+  fit.converged = fit.converged || converged;
+  if (!(std::isfinite(summary.final_cost) && summary.final_cost < best_cost * (1.0 - 1e-9))) return false;
+  best_cost = summary.final_cost;
+  return true;
+}
+
 }  // namespace
 
 ExponentialFit fit_exponential(std::span<const double> x, std::span<const double> y, double fixed_amplitude,
@@ -355,7 +371,9 @@ ExponentialFit fit_exponential(std::span<const double> x, std::span<const double
   double best_cost = std::numeric_limits<double>::infinity();
   ceres::Solver::Options options = solver_options();
   options.max_num_iterations = max_iterations;
-  for (const double rate_start : {fixed_rate, -20.0, -12.0, -8.0, -5.0, -3.0, -1.5, -0.5, 0.5, 2.0}) {
+  std::vector<double> rate_starts{fixed_rate};
+  rate_starts.insert(rate_starts.end(), std::begin(kRateStarts), std::end(kRateStarts));
+  for (const double rate_start : rate_starts) {
     double parameters[3];
     std::tie(parameters[0], parameters[2]) = linear_amplitude_offset(x, y, rate_start);
     parameters[1] = rate_start;
@@ -367,11 +385,7 @@ ExponentialFit fit_exponential(std::span<const double> x, std::span<const double
     problem.SetParameterUpperBound(parameters, 1, kRateBound);
     ceres::Solver::Summary summary;
     ceres::Solve(options, &problem, &summary);
-    const bool converged = summary.termination_type == ceres::CONVERGENCE && std::isfinite(summary.final_cost);
-    if (!converged && fit.solver_report.empty()) fit.solver_report = summary.message;
-    fit.converged = fit.converged || converged;
-    if (std::isfinite(summary.final_cost) && summary.final_cost < best_cost * (1.0 - 1e-9)) {
-      best_cost = summary.final_cost;
+    if (record_start(summary, fit, best_cost)) {
       fit.amplitude = parameters[0];
       fit.rate = parameters[1];
       fit.offset = parameters[2];
@@ -403,7 +417,7 @@ ExponentialFit fit_stiffness_form(std::span<const double> x, std::span<const dou
   const bool fit_amplitude = !single_material && distinct_x >= 2;
   const bool fit_rate = !single_material && distinct_x >= kDistinctForRate;
   std::vector<double> rate_starts{prior.rate};
-  if (fit_rate) rate_starts.insert(rate_starts.end(), {-20.0, -12.0, -8.0, -5.0, -3.0, -1.5, -0.5, 0.5, 2.0});
+  if (fit_rate) rate_starts.insert(rate_starts.end(), std::begin(kRateStarts), std::end(kRateStarts));
   ceres::Solver::Options options = solver_options();
   options.max_num_iterations = max_iterations;
   double best_cost = std::numeric_limits<double>::infinity();
@@ -428,11 +442,7 @@ ExponentialFit fit_stiffness_form(std::span<const double> x, std::span<const dou
     if (!off_reference) problem.SetParameterBlockConstant(&exponent);
     ceres::Solver::Summary summary;
     ceres::Solve(options, &problem, &summary);
-    const bool converged = summary.termination_type == ceres::CONVERGENCE && std::isfinite(summary.final_cost);
-    if (!converged && fit.solver_report.empty()) fit.solver_report = summary.message;
-    fit.converged = fit.converged || converged;
-    if (std::isfinite(summary.final_cost) && summary.final_cost < best_cost * (1.0 - 1e-9)) {
-      best_cost = summary.final_cost;
+    if (record_start(summary, fit, best_cost)) {
       fit.amplitude = amplitude;
       fit.rate = rate;
       fit.offset = offset;
