@@ -30,7 +30,8 @@ Ellipsoid::Ellipsoid(const Eigen::Vector3d& semi_axes, const Pose& pose) noexcep
   } else {
     pose_.orientation = Eigen::Quaterniond::Identity();
   }
-  valid_ = quaternion_ok && semi_axes_.allFinite() && (semi_axes_.array() > 0.0).all() && pose_.position.allFinite();
+  shape_valid_ = quaternion_ok && semi_axes_.allFinite() && (semi_axes_.array() > 0.0).all();
+  valid_ = shape_valid_ && pose_.position.allFinite();
   rotation_ = pose_.orientation.toRotationMatrix();
   shape_diagonal_ = semi_axes_.array().square().inverse();
   inverse_shape_ = rotated_diagonal(rotation_, semi_axes_.array().square().matrix());
