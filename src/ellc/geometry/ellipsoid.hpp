@@ -84,6 +84,9 @@ class Ellipsoid {
     moved.valid_ = shape_valid_ && center.allFinite();
     return moved;
   }
+  // Poses this ellipsoid anew, in place: bit for bit Ellipsoid(semi_axes(), pose), without the
+  // semi-axes' part and a copy of the whole object (a DEM re-poses every particle every step).
+  void set_pose(const Pose& pose) noexcept;
 
   // The surface point whose outward unit normal is `world_normal` (normalised here).
   [[nodiscard]] Eigen::Vector3d surface_point_with_normal(const Eigen::Vector3d& world_normal) const noexcept;
@@ -130,6 +133,7 @@ class Ellipsoid {
   Eigen::Matrix3d inverse_shape_;
   Eigen::Matrix3d shape_;
   Eigen::Vector3d shape_diagonal_;  // M = diag(a⁻², b⁻², c⁻²), body frame
+  bool axes_valid_ = false;         // semi-axes finite and > 0
   bool shape_valid_ = false;        // quaternion and semi-axes usable (valid_ also needs the centre)
   bool valid_ = false;
 };
