@@ -4,6 +4,10 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <cstring>
+#include <utility>
+
 #include "ellc/geometry/tip_contact.hpp"
 #include "ellc/geometry/wall_contact.hpp"
 #include "support/geometry_support.hpp"
@@ -48,6 +52,65 @@ TEST(NormalContactWiring, SeparatedGeometryGivesNoForce) {
   EXPECT_EQ(contact.law.force, 0.0);
   EXPECT_EQ(contact.law.regime, Regime::separated);
   EXPECT_EQ(contact.force_on_j, Eigen::Vector3d::Zero());
+}
+
+// The DEM's scope (ConstantsScope::law_reads) skips e² and, below first yield, the transition fit:
+// the law must give the same bits, and every constant it leaves unset must be one the law did not
+// read at this δ and δ_* (else the force would be NaN).
+TEST(NormalContact, LawReadsScopeGivesTheSameBitsAsAllConstants) {
+  const ContactMaterial material = mix(test::kNmc, test::kNmc);
+  const auto same = [](double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; };
+  int unset_transitions = 0, set_transitions = 0;
+  for (const double ratio : {1.0, 1.3, 2.0, 7.0, 40.0, 3000.0}) {  // B/A: both branches of Hale's fit
+    ContactGeometry geometry;
+    geometry.relative = {0.25, 0.25 * ratio};
+    const ContactConstants reference =
+        make_contact_constants(material, hertz_shape(geometry.relative, HertzMode::hale), 8.0, LawParameters{});
+    const double yield = reference.yield_overlap;
+    // Overlaps × histories: elastic, transition, fully plastic on loading; unloading below each.
+    for (const double overlap : {0.3 * yield, 0.999 * yield, 2.0 * yield, 0.5 * reference.plastic_limit_overlap,
+                                 3.0 * reference.plastic_limit_overlap}) {
+      for (const double history : {0.0, 0.5 * overlap, overlap, 1.01 * overlap, 0.9 * yield + overlap, 5.0 * yield}) {
+        geometry.overlap = overlap;
+        const NormalContact all = normal_contact(geometry, material, 8.0, HertzMode::hale, LawParameters{}, history);
+        const NormalContact lean = normal_contact(geometry, material, 8.0, HertzMode::hale, LawParameters{}, history,
+                                                  ConstantsScope::law_reads);
+        SCOPED_TRACE(testing::Message() << "B/A " << ratio << ", delta/delta_Y " << overlap / yield
+                                        << ", history/delta_Y " << history / yield);
+        EXPECT_TRUE(same(lean.law.force, all.law.force));
+        EXPECT_TRUE(same(lean.law.max_overlap, all.law.max_overlap));
+        EXPECT_EQ(lean.law.regime, all.law.regime);
+        EXPECT_TRUE(same(lean.branch.coefficient, all.branch.coefficient));
+        EXPECT_TRUE(same(lean.branch.elastic_overlap, all.branch.elastic_overlap));
+        EXPECT_TRUE(same(lean.branch.radius_scale, all.branch.radius_scale));
+        const ContactConstants& l = lean.constants;
+        const ContactConstants& a = all.constants;
+        for (const auto& [mine, theirs] :
+             {std::pair{l.effective_modulus, a.effective_modulus}, std::pair{l.yield_stress, a.yield_stress},
+              std::pair{l.equivalent_radius, a.equivalent_radius}, std::pair{l.f1, a.f1}, std::pair{l.f2, a.f2},
+              std::pair{l.contact_radius_sq_per_overlap, a.contact_radius_sq_per_overlap},
+              std::pair{l.hertz_coefficient, a.hertz_coefficient}, std::pair{l.yield_pressure, a.yield_pressure},
+              std::pair{l.yield_contact_radius, a.yield_contact_radius}, std::pair{l.yield_overlap, a.yield_overlap},
+              std::pair{l.yield_force, a.yield_force}, std::pair{l.transition_exponent, a.transition_exponent},
+              std::pair{l.yield_pressure_factor, a.yield_pressure_factor}})
+          EXPECT_TRUE(same(mine, theirs));
+        EXPECT_TRUE(std::isnan(l.eccentricity_sq));
+        const bool beyond_yield = overlap > yield || history > yield;
+        EXPECT_EQ(law_needs_transition(l, overlap, history), beyond_yield);
+        if (beyond_yield) {
+          ++set_transitions;
+          EXPECT_TRUE(same(l.lambda_max, a.lambda_max));
+          EXPECT_TRUE(same(l.epsilon_max, a.epsilon_max));
+          EXPECT_TRUE(same(l.plastic_limit_overlap, a.plastic_limit_overlap));
+        } else {
+          ++unset_transitions;
+          EXPECT_TRUE(std::isnan(l.lambda_max) && std::isnan(l.epsilon_max) && std::isnan(l.plastic_limit_overlap));
+        }
+      }
+    }
+  }
+  EXPECT_GT(unset_transitions, 0);  // both cases were exercised
+  EXPECT_GT(set_transitions, 0);
 }
 
 }  // namespace

@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstring>
 #include <numbers>
 
 #include "support/geometry_support.hpp"
@@ -185,6 +186,60 @@ TEST(Ellipsoid, InvalidDataIsFlagged) {
   const Ellipsoid scaled(Eigen::Vector3d(1, 2, 3), {Eigen::Vector3d::Zero(), Eigen::Quaterniond(2, 0, 0, 0)});
   EXPECT_TRUE(scaled.valid());
   EXPECT_TRUE(scaled.rotation().isApprox(Eigen::Matrix3d::Identity()));
+}
+
+// moved_to (periodic images in the engines) is the ellipsoid built anew at the image's centre,
+// bit for bit, and valid exactly when that one is.
+TEST(Ellipsoid, MovedToIsTheEllipsoidBuiltAtTheNewCentre) {
+  const auto same = [](const auto& a, const auto& b) {
+    return std::memcmp(a.data(), b.data(), sizeof(double) * static_cast<std::size_t>(a.size())) == 0;
+  };
+  const Eigen::Vector3d axes(1.5, 0.7, 2.2);
+  const Eigen::Quaterniond turn(0.3, -0.8, 0.4, 1.1);  // not normalised: the constructor normalises it
+  const Ellipsoid original(axes, {Eigen::Vector3d(0.25, -3.0, 7.5), turn});
+  const Eigen::Vector3d image(100.25, -3.0, 7.5);
+  const Ellipsoid moved = original.moved_to(image);
+  const Ellipsoid built(axes, {image, turn});
+  EXPECT_TRUE(same(moved.center(), built.center()));
+  EXPECT_TRUE(same(moved.pose().orientation.coeffs(), built.pose().orientation.coeffs()));
+  EXPECT_TRUE(same(moved.rotation(), built.rotation()));
+  EXPECT_TRUE(same(moved.inverse_shape(), built.inverse_shape()));
+  EXPECT_TRUE(same(moved.shape(), built.shape()));
+  EXPECT_TRUE(moved.valid() && built.valid());
+  EXPECT_TRUE(same(moved.normal_at(image + Eigen::Vector3d(0.3, 0.1, -0.2)),
+                   built.normal_at(image + Eigen::Vector3d(0.3, 0.1, -0.2))));
+  // Validity follows the new centre; bad semi-axes stay bad wherever the body goes.
+  const Eigen::Vector3d nowhere(std::nan(""), 0.0, 0.0);
+  EXPECT_FALSE(original.moved_to(nowhere).valid());
+  EXPECT_TRUE(Ellipsoid(axes, {nowhere, turn}).moved_to(image).valid());
+  EXPECT_FALSE(Ellipsoid(Eigen::Vector3d(1.0, -1.0, 1.0)).moved_to(image).valid());
+}
+
+// set_pose (the engine re-poses every particle in place each step) is the ellipsoid built anew
+// with that pose, bit for bit, whatever the pose before; validity follows the new pose.
+TEST(Ellipsoid, SetPoseIsTheEllipsoidBuiltWithThatPose) {
+  const auto same = [](const auto& a, const auto& b) {
+    return std::memcmp(a.data(), b.data(), sizeof(double) * static_cast<std::size_t>(a.size())) == 0;
+  };
+  const Eigen::Vector3d axes(1.5, 0.7, 2.2);
+  Ellipsoid reposed(axes, {Eigen::Vector3d(std::nan(""), 0.0, 0.0), Eigen::Quaterniond(0.0, 0.0, 0.0, 0.0)});
+  EXPECT_FALSE(reposed.valid());
+  for (const Pose& pose : {Pose{Eigen::Vector3d(0.25, -3.0, 7.5), Eigen::Quaterniond(0.3, -0.8, 0.4, 1.1)},
+                           Pose{Eigen::Vector3d(-1.0, 2.0, 0.5), Eigen::Quaterniond(-0.9, 0.1, 0.05, -0.2)}}) {
+    reposed.set_pose(pose);
+    const Ellipsoid built(axes, pose);
+    EXPECT_TRUE(same(reposed.center(), built.center()));
+    EXPECT_TRUE(same(reposed.pose().orientation.coeffs(), built.pose().orientation.coeffs()));
+    EXPECT_TRUE(same(reposed.rotation(), built.rotation()));
+    EXPECT_TRUE(same(reposed.inverse_shape(), built.inverse_shape()));
+    EXPECT_TRUE(same(reposed.shape(), built.shape()));
+    EXPECT_TRUE(reposed.valid() && built.valid());
+  }
+  reposed.set_pose({Eigen::Vector3d::Zero(), Eigen::Quaterniond(0.0, 0.0, 0.0, 0.0)});
+  EXPECT_FALSE(reposed.valid());
+  Ellipsoid flat(Eigen::Vector3d(1.0, 0.0, 1.0));
+  flat.set_pose({});
+  EXPECT_FALSE(flat.valid());
 }
 
 }  // namespace

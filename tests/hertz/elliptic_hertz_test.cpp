@@ -4,6 +4,7 @@
 
 #include <Eigen/Dense>
 #include <cmath>
+#include <cstring>
 
 #include "ellc/hertz/elliptic_hertz.hpp"
 #include "support/nmc.hpp"
@@ -152,4 +153,28 @@ TEST(Hertz, PressureFieldIntegratesToTheForce) {
   integral *= (2.0 / n) * (2.0 / n) * contact.semi_axis_major * contact.semi_axis_minor;
   EXPECT_NEAR(integral / contact.force, 1.0, 2e-4);
 }
+
+// ShapeParts::without_axes (the DEM's contact constants) skips Hale's e² only: R_e, f1 and f2
+// are the same bits, over both branches of Hale's fit (B/A below and above e^{0.5/0.0684}).
+TEST(Hertz, ShapeWithoutAxesKeepsTheLawsPartsBitForBit) {
+  using ellc::HertzShape, ellc::RelativeCurvature, ellc::ShapeParts, ellc::hertz_shape;
+  const auto same = [](double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; };
+  for (const double ratio : {1.0, 1.0 + 1e-9, 1.2, 1.68, 1.7, 3.0, 100.0, 1400.0, 1600.0, 1e5}) {
+    const RelativeCurvature curvature{0.1, 0.1 * ratio};
+    for (const HertzMode mode : {HertzMode::hale, HertzMode::exact}) {
+      const HertzShape all = hertz_shape(curvature, mode);
+      const HertzShape lean = hertz_shape(curvature, mode, ShapeParts::without_axes);
+      SCOPED_TRACE(testing::Message() << "B/A " << ratio << (mode == HertzMode::hale ? " hale" : " exact"));
+      EXPECT_TRUE(same(lean.equivalent_radius, all.equivalent_radius));
+      EXPECT_TRUE(same(lean.f1, all.f1));
+      EXPECT_TRUE(same(lean.f2, all.f2));
+      EXPECT_TRUE(std::isfinite(all.eccentricity_sq));
+      if (mode == HertzMode::hale)
+        EXPECT_TRUE(std::isnan(lean.eccentricity_sq));
+      else
+        EXPECT_TRUE(same(lean.eccentricity_sq, all.eccentricity_sq));
+    }
+  }
+}
+
 }  // namespace

@@ -153,14 +153,14 @@ ContactForce contact_force(const InteractionContext& context, const ContactConst
   result.normal_stiffness = branch.normal;
   result.damping_dissipation = (law_force - normal_force) * normal_speed * dt;
   const double k_t = tangential_stiffness(context, branch);
-  const TangentialCoefficients tangential{
-      k_t, viscous_damping(model.tangential_damping, kinematics.effective_mass, k_t), model.friction};
-  if (!(tangential.stiffness > 0.0) || !(tangential.friction > 0.0)) {
+  if (!(k_t > 0.0) || !(model.friction > 0.0)) {  // no spring: c_t is not needed
     history.spring() = Eigen::Vector3d::Zero();
     history.spring_stiffness = k_t;
     result.on_j = normal_force * n;
     return result;
   }
+  const TangentialCoefficients tangential{
+      k_t, viscous_damping(model.tangential_damping, kinematics.effective_mass, k_t), model.friction};
   // Incremental spring (Thornton and Yin): a stiffer contact keeps the spring's force (ξ scaled by
   // k_old/k_t), a softer one keeps ξ so the force shrinks with the contact. Either way the spring
   // gives up energy, never gains it; what it gives up is booked with friction.

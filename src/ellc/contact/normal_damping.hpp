@@ -10,8 +10,10 @@
 namespace ellc {
 
 // c = 2 ζ sqrt(m* k): the fraction ζ of the critical damping of a mass m* on a spring k, so that
-// ζ means the same for every stiffness and mass.
+// ζ means the same for every stiffness and mass. ζ = 0 returns 0 without the square root (the
+// same 0 as the formula for any finite m* k ≥ 0; the undamped models of both engines run so).
 [[nodiscard]] inline double viscous_damping(double damping_ratio, double effective_mass, double stiffness) noexcept {
+  if (damping_ratio == 0.0) return 0.0;
   return 2.0 * damping_ratio * std::sqrt(effective_mass * stiffness);
 }
 

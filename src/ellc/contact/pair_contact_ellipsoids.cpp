@@ -14,10 +14,13 @@ namespace ellc {
 namespace {
 
 // Calls `use` with the posed ellipsoid of the body: the prebuilt one when it sits where the body
-// is, else (periodic images) one built here.
+// is, a copy of it moved to the image's centre for a periodic image, else one built here.
 template <typename Use>
 auto with_shape(const BodyRef& body, Use&& use) noexcept {
-  if (body.shape != nullptr && body.shape->center() == body.centre) return use(*body.shape);
+  if (body.shape != nullptr) {
+    if (body.shape->center() == body.centre) return use(*body.shape);
+    return use(body.shape->moved_to(body.centre));
+  }
   return use(Ellipsoid(body.semi_axes, Pose{body.centre, body.orientation}));
 }
 
@@ -34,8 +37,10 @@ PairSolution with_law(const NarrowPhaseResult& found, double mean_radius_sum, Co
     if (found.status == NarrowPhaseStatus::separated) solution.clearance = std::max(-found.geometry.overlap, 0.0);
     return solution;
   }
+  // Only the constants the law reads: the cache keeps them for the energies of yielded contacts and
+  // c_c/r̂, which read no more (ConstantsScope).
   const NormalContact contact = normal_contact(found.geometry, context.material, mean_radius_sum, context.model.hertz,
-                                               context.model.law, history.max_overlap);
+                                               context.model.law, history.max_overlap, ConstantsScope::law_reads);
   cache.constants = contact.constants;
   solution.status = PairStatus::contact;
   solution.normal = found.geometry.normal;

@@ -166,7 +166,12 @@ void Simulation::refresh_body_frames() noexcept {
 void Simulation::refresh_body_frame(std::size_t slot) noexcept {
   auto& p = particles_;
   omega_world_[slot] = p.orientation[slot] * p.angular_velocity[slot];
-  if (is_sphere_[slot] == 0) shapes_[slot] = Ellipsoid(p.semi_axes[slot], Pose{p.position[slot], p.orientation[slot]});
+  if (is_sphere_[slot] != 0) return;
+  // In place (no temporary Ellipsoid and copy); the same bits as building it anew.
+  if (shapes_[slot].semi_axes() == p.semi_axes[slot])
+    shapes_[slot].set_pose(Pose{p.position[slot], p.orientation[slot]});
+  else
+    shapes_[slot] = Ellipsoid(p.semi_axes[slot], Pose{p.position[slot], p.orientation[slot]});
 }
 
 // The threads of the next step: all of omp_get_max_threads(), or the adaptive choice between one

@@ -22,7 +22,14 @@ Eigen::Matrix3d rotated_diagonal(const Eigen::Matrix3d& rotation, const Eigen::V
 
 }  // namespace
 
-Ellipsoid::Ellipsoid(const Eigen::Vector3d& semi_axes, const Pose& pose) noexcept : semi_axes_(semi_axes), pose_(pose) {
+Ellipsoid::Ellipsoid(const Eigen::Vector3d& semi_axes, const Pose& pose) noexcept : semi_axes_(semi_axes) {
+  axes_valid_ = semi_axes_.allFinite() && (semi_axes_.array() > 0.0).all();
+  shape_diagonal_ = semi_axes_.array().square().inverse();
+  set_pose(pose);
+}
+
+void Ellipsoid::set_pose(const Pose& pose) noexcept {
+  pose_ = pose;
   const double quaternion_norm = pose_.orientation.norm();
   const bool quaternion_ok = std::isfinite(quaternion_norm) && quaternion_norm > 0.0;
   if (quaternion_ok) {
@@ -30,9 +37,9 @@ Ellipsoid::Ellipsoid(const Eigen::Vector3d& semi_axes, const Pose& pose) noexcep
   } else {
     pose_.orientation = Eigen::Quaterniond::Identity();
   }
-  valid_ = quaternion_ok && semi_axes_.allFinite() && (semi_axes_.array() > 0.0).all() && pose_.position.allFinite();
+  shape_valid_ = quaternion_ok && axes_valid_;
+  valid_ = shape_valid_ && pose_.position.allFinite();
   rotation_ = pose_.orientation.toRotationMatrix();
-  shape_diagonal_ = semi_axes_.array().square().inverse();
   inverse_shape_ = rotated_diagonal(rotation_, semi_axes_.array().square().matrix());
   shape_ = rotated_diagonal(rotation_, shape_diagonal_);
 }

@@ -76,6 +76,17 @@ class Ellipsoid {
   // M_w = R D⁻² Rᵀ: the surface is (x − c)ᵀ M_w (x − c) = 1 (world frame).
   [[nodiscard]] const Eigen::Matrix3d& shape() const noexcept { return shape_; }
   [[nodiscard]] bool valid() const noexcept { return valid_; }
+  // The same ellipsoid with its centre at `center` (a periodic image): the same orientation and
+  // matrices, bit for bit as if built anew there, without the quaternion and the matrix products.
+  [[nodiscard]] Ellipsoid moved_to(const Eigen::Vector3d& center) const noexcept {
+    Ellipsoid moved = *this;
+    moved.pose_.position = center;
+    moved.valid_ = shape_valid_ && center.allFinite();
+    return moved;
+  }
+  // Poses this ellipsoid anew, in place: bit for bit Ellipsoid(semi_axes(), pose), without the
+  // semi-axes' part and a copy of the whole object (a DEM re-poses every particle every step).
+  void set_pose(const Pose& pose) noexcept;
 
   // The surface point whose outward unit normal is `world_normal` (normalised here).
   [[nodiscard]] Eigen::Vector3d surface_point_with_normal(const Eigen::Vector3d& world_normal) const noexcept;
@@ -122,6 +133,8 @@ class Ellipsoid {
   Eigen::Matrix3d inverse_shape_;
   Eigen::Matrix3d shape_;
   Eigen::Vector3d shape_diagonal_;  // M = diag(a⁻², b⁻², c⁻²), body frame
+  bool axes_valid_ = false;         // semi-axes finite and > 0
+  bool shape_valid_ = false;        // quaternion and semi-axes usable (valid_ also needs the centre)
   bool valid_ = false;
 };
 

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 
 #include "ellc/hertz/elliptic_integrals.hpp"
@@ -87,7 +88,7 @@ double log_expm1_small(double x, double log_x) noexcept {
   return log_x + 0.5 * x + series;
 }
 
-HertzShape hale_shape(double equivalent_radius, double ratio) noexcept {
+HertzShape hale_shape(double equivalent_radius, double ratio, ShapeParts parts) noexcept {
   // Eq. (4) and (7) as corrected in docs/model.md §1, with B/A ≥ 1:
   //   e² = 1 − (A/B)^{4/3},  f1 = 1 − ((B/A)^0.0602 − 1)^1.456,  f2 = 1 − ((B/A)^0.0684 − 1)^1.531.
   // A DEM evaluates this per contact and step, so the transcendental calls are counted: every
@@ -102,8 +103,12 @@ HertzShape hale_shape(double equivalent_radius, double ratio) noexcept {
   // fraction of expm1 (measured: expm1 alone took 4 % of a DEM step); below, expm1 keeps the
   // small e² to full relative precision.
   const double eccentricity_exponent = (4.0 / 3.0) * log_ratio;
-  shape.eccentricity_sq = eccentricity_exponent > std::numbers::ln2 ? 1.0 - std::exp(-eccentricity_exponent)
-                                                                    : -std::expm1(-eccentricity_exponent);
+  if (parts == ShapeParts::all) {
+    shape.eccentricity_sq = eccentricity_exponent > std::numbers::ln2 ? 1.0 - std::exp(-eccentricity_exponent)
+                                                                      : -std::expm1(-eccentricity_exponent);
+  } else {
+    shape.eccentricity_sq = std::numeric_limits<double>::quiet_NaN();  // not asked for: visible if read
+  }
   if (log_ratio > 0.0 && kPower2 * log_ratio <= kSeriesLimit) {
     const double log_log_ratio = std::log(log_ratio);
     static const double log_power1 = std::log(kPower1);
@@ -151,10 +156,10 @@ RelativeCurvature relative_curvature_from_tensor(double sum_11, double sum_12, d
   return {0.5 * (sum - difference), 0.5 * (sum + difference)};
 }
 
-HertzShape hertz_shape(RelativeCurvature curvature, HertzMode mode) noexcept {
+HertzShape hertz_shape(RelativeCurvature curvature, HertzMode mode, ShapeParts parts) noexcept {
   const double equivalent_radius = 0.5 / std::sqrt(curvature.a_sum * curvature.b_sum);
   const double ratio = std::max(curvature.b_sum / curvature.a_sum, 1.0);
-  return mode == HertzMode::exact ? exact_shape(equivalent_radius, ratio) : hale_shape(equivalent_radius, ratio);
+  return mode == HertzMode::exact ? exact_shape(equivalent_radius, ratio) : hale_shape(equivalent_radius, ratio, parts);
 }
 
 HertzContact hertz_contact(const HertzShape& shape, double effective_modulus, double overlap) noexcept {

@@ -49,9 +49,19 @@ struct HertzContact {
 // eq. (5) term for term, without the principal directions or α.
 [[nodiscard]] RelativeCurvature relative_curvature_from_tensor(double sum_11, double sum_12, double sum_22) noexcept;
 
+// Which parts of the shape a caller needs. The law of one contact (eq. 9, 10 and the yield point)
+// reads R_e, f1 and f2 only; e² gives the contact ellipse's axes (hertz_contact, the pressure
+// patch). A DEM builds the shape per contact and step, and Hale's e² costs one exp or expm1 more.
+enum class ShapeParts {
+  all,           // R_e, e², f1, f2
+  without_axes,  // R_e, f1, f2; e² is NaN for Hale's fit (the exact mode has it for free)
+};
+
 // R_e, e², f1, f2 for A ≤ B, A > 0. Hale: eq. (4), (7) with B/A ≥ 1. Exact: solves
-// B/A = (E/k² − K)/(K − E) for k = b_c/a_c (Johnson 1985, Sec. 4.2).
-[[nodiscard]] HertzShape hertz_shape(RelativeCurvature curvature, HertzMode mode) noexcept;
+// B/A = (E/k² − K)/(K − E) for k = b_c/a_c (Johnson 1985, Sec. 4.2). The parts computed are the
+// same bits whichever `parts` asks for them.
+[[nodiscard]] HertzShape hertz_shape(RelativeCurvature curvature, HertzMode mode,
+                                     ShapeParts parts = ShapeParts::all) noexcept;
 
 // Contact ellipse, p0 and F_H at overlap δ ≥ 0 for effective modulus E_e.
 [[nodiscard]] HertzContact hertz_contact(const HertzShape& shape, double effective_modulus, double overlap) noexcept;

@@ -1,13 +1,14 @@
 #include "ellc/law/contact_constants.hpp"
 
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <sstream>
 
 namespace ellc {
 
-ContactConstants make_contact_constants(const ContactMaterial& material, const HertzShape& shape,
-                                        double mean_radius_sum, const LawParameters& parameters) noexcept {
+ContactConstants make_yield_constants(const ContactMaterial& material, const HertzShape& shape,
+                                      const LawParameters& parameters) noexcept {
   constexpr double pi = std::numbers::pi;
   ContactConstants c;
   c.effective_modulus = material.effective_modulus;
@@ -25,12 +26,24 @@ ContactConstants make_contact_constants(const ContactMaterial& material, const H
   const double yield_radius_sq = c.yield_contact_radius * c.yield_contact_radius;
   c.yield_overlap = yield_radius_sq / c.contact_radius_sq_per_overlap;
   c.yield_force = (2.0 / 3.0) * pi * yield_radius_sq * c.yield_pressure;
+  c.transition_exponent = parameters.fit.transition_exponent;
+  constexpr double unset = std::numeric_limits<double>::quiet_NaN();  // set_transition_constants
+  c.lambda_max = c.epsilon_max = c.plastic_limit_overlap = unset;
+  return c;
+}
+
+void set_transition_constants(ContactConstants& c, double mean_radius_sum, const LawParameters& parameters) noexcept {
   const double radius_ratio = c.equivalent_radius / mean_radius_sum;    // R_e / r̂^{I,J}
   const double stiffness_ratio = c.effective_modulus / c.yield_stress;  // η = E_e/Y
   c.lambda_max = parameters.fit.lambda_max_for(radius_ratio, stiffness_ratio);
   c.epsilon_max = parameters.fit.epsilon_max_for(radius_ratio, stiffness_ratio);
-  c.transition_exponent = parameters.fit.transition_exponent;
   c.plastic_limit_overlap = c.epsilon_max * c.epsilon_max * c.yield_overlap;
+}
+
+ContactConstants make_contact_constants(const ContactMaterial& material, const HertzShape& shape,
+                                        double mean_radius_sum, const LawParameters& parameters) noexcept {
+  ContactConstants c = make_yield_constants(material, shape, parameters);
+  set_transition_constants(c, mean_radius_sum, parameters);
   return c;
 }
 

@@ -36,6 +36,16 @@ struct ContactConstants {
                                                       double mean_radius_sum,
                                                       const LawParameters& parameters = {}) noexcept;
 
+// make_contact_constants in its two stages, for a caller that builds constants per contact and
+// step (a DEM). First everything the law reads up to first yield (E_e, R_e, f1, f2, the Hertz
+// coefficient, the yield point, n); λ_max, ε_max and δ_max, which the law reads only beyond δ_Y
+// (law_needs_transition, contact_law.hpp), are NaN. Then the transition fit (eq. 52, two exp)
+// sets those three. Both stages together are make_contact_constants, bit for bit.
+[[nodiscard]] ContactConstants make_yield_constants(const ContactMaterial& material, const HertzShape& shape,
+                                                    const LawParameters& parameters = {}) noexcept;
+void set_transition_constants(ContactConstants& constants, double mean_radius_sum,
+                              const LawParameters& parameters = {}) noexcept;
+
 // The usual path: principal curvatures of both bodies and the angle α between their κ1
 // directions → A, B (eq. 5) → Hertz shape → constants.
 [[nodiscard]] ContactConstants make_contact_constants(const ContactMaterial& material, PrincipalCurvatures body_i,

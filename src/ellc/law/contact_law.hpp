@@ -70,6 +70,13 @@ inline constexpr double kPi = std::numbers::pi;
          (c.lambda_max - c.yield_pressure_factor) * std::pow(std::fmax(progress_left, 0.0), c.transition_exponent);
 }
 
+// Whether the law at overlap δ with history δ_* reads the transition constants λ_max, ε_max and
+// δ_max (make_yield_constants leaves them unset): only beyond first yield, i.e. on loading past
+// δ_Y or below a δ_* > δ_Y (the unloading curve is derived from the loading force at δ_*).
+[[nodiscard]] inline bool law_needs_transition(const ContactConstants& c, double overlap, double max_overlap) noexcept {
+  return overlap > c.yield_overlap || max_overlap > c.yield_overlap;
+}
+
 // The loading envelope F(δ) for monotonic loading, and the regime it is in.
 struct LoadingPoint {
   double force;
