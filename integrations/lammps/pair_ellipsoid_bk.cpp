@@ -39,6 +39,7 @@ PairEllipsoidBK::~PairEllipsoidBK() {
   // The history fix and the shape compute belong to this style; remove them with it.
   if (modify->find_fix(kHistoryFixId) >= 0) modify->delete_fix(kHistoryFixId);
   if (modify->find_compute(kBodiesComputeId) >= 0) modify->delete_compute(kBodiesComputeId);
+  if (modify->find_compute(kOrientationsComputeId) >= 0) modify->delete_compute(kOrientationsComputeId);
   if (allocated) {
     memory->destroy(setflag);
     memory->destroy(cutsq);
@@ -108,12 +109,17 @@ void PairEllipsoidBK::init_style() {
   comm->ghost_velocity = 1;  // relative velocities at contact points of ghost partners
   neighbor->request(this, instance_me);
 
-  // Internal compute: shapes (diameters) and quaternions of owned atoms.
+  // Internal computes: shapes (diameters) and quaternions of owned atoms; quaternions alone.
   if (modify->find_compute(kBodiesComputeId) < 0)
     modify->add_compute(std::string(kBodiesComputeId) +
                         " all property/atom shapex shapey shapez quatw quati quatj quatk");
+  if (modify->find_compute(kOrientationsComputeId) < 0)
+    modify->add_compute(std::string(kOrientationsComputeId) + " all property/atom quatw quati quatj quatk");
   bodies_compute_ = modify->compute[modify->find_compute(kBodiesComputeId)];
   bodies_compute_->init();
+  orientations_compute_ = modify->compute[modify->find_compute(kOrientationsComputeId)];
+  orientations_compute_->init();
+  shapes_for_build_ = -1;
 
   // History fix. On a restarted run, creating it here picks up its records from the restart file.
   if (modify->find_fix(kHistoryFixId) < 0)
@@ -136,7 +142,7 @@ void PairEllipsoidBK::init_style() {
 
 // Per-type cutoff radii, and the bad-input checks on shapes: point particles, calibrated range.
 void PairEllipsoidBK::check_shapes() {
-  gather_bodies(false);  // owned atoms only: ghost lists are rebuilt later, in the setup of the run
+  gather_bodies(false, true);  // owned atoms only: ghost lists are rebuilt later, in the setup of the run
   const int ntypes = atom->ntypes;
   std::vector<double> radius(static_cast<std::size_t>(ntypes + 1), 0.0);
   tagint first_point = 0;
@@ -206,34 +212,48 @@ double PairEllipsoidBK::init_one(int i, int j) {
   return cut > 0.0 ? cut : 1.0;
 }
 
-// Shapes and quaternions of owned atoms from the compute, then (to_ghosts) to ghost atoms.
-void PairEllipsoidBK::gather_bodies(bool to_ghosts) {
+// Owned atoms from the computes, then (to_ghosts) ghost atoms by a forward communication of
+// values [forward_first_value_, kBodyValues) per atom: 7 doubles with shapes, 4 without.
+void PairEllipsoidBK::gather_bodies(bool to_ghosts, bool with_shapes) {
   const int nmax = atom->nmax;
   if (bodies_.size() < static_cast<std::size_t>(nmax) * kBodyValues) {
     bodies_.resize(static_cast<std::size_t>(nmax) * kBodyValues);
   }
-  bodies_compute_->compute_peratom();
-  bodies_compute_->invoked_peratom = update->ntimestep;
-  double** values = bodies_compute_->array_atom;
+  Compute* source = with_shapes ? bodies_compute_ : orientations_compute_;
+  source->compute_peratom();
+  source->invoked_peratom = update->ntimestep;
+  double** values = source->array_atom;
   for (int i = 0; i < atom->nlocal; ++i) {
     double* body = &bodies_[static_cast<std::size_t>(i) * kBodyValues];
-    for (int k = 0; k < 3; ++k) body[k] = 0.5 * values[i][k];  // diameters → semi-axes
-    for (int k = 3; k < kBodyValues; ++k) body[k] = values[i][k];
+    const double* row = values[i];
+    if (with_shapes) {
+      for (int k = 0; k < kShapeValues; ++k) body[k] = 0.5 * row[k];  // diameters → semi-axes
+      row += kShapeValues;
+    }
+    std::copy(row, row + (kBodyValues - kShapeValues), body + kShapeValues);
   }
-  if (to_ghosts) comm->forward_comm_pair(this);
+  if (to_ghosts) {
+    forward_first_value_ = with_shapes ? 0 : kShapeValues;
+    comm->forward_comm_pair(this);
+  }
 }
 
 int PairEllipsoidBK::pack_forward_comm(int n, int* send_list, double* buffer, int /*pbc_flag*/, int* /*pbc*/) {
+  const int width = kBodyValues - forward_first_value_;
   for (int k = 0; k < n; ++k) {
     const double* body = &bodies_[static_cast<std::size_t>(send_list[k]) * kBodyValues];
-    std::copy(body, body + kBodyValues, buffer + static_cast<std::ptrdiff_t>(k) * kBodyValues);
+    std::copy(body + forward_first_value_, body + kBodyValues, buffer + static_cast<std::ptrdiff_t>(k) * width);
   }
-  return n * kBodyValues;
+  return n * width;
 }
 
 void PairEllipsoidBK::unpack_forward_comm(int n, int first, double* buffer) {
-  std::copy(buffer, buffer + static_cast<std::ptrdiff_t>(n) * kBodyValues,
-            bodies_.begin() + static_cast<std::ptrdiff_t>(first) * kBodyValues);
+  const int width = kBodyValues - forward_first_value_;
+  for (int k = 0; k < n; ++k) {
+    const double* from = buffer + static_cast<std::ptrdiff_t>(k) * width;
+    std::copy(from, from + width,
+              bodies_.begin() + static_cast<std::ptrdiff_t>(first + k) * kBodyValues + forward_first_value_);
+  }
 }
 
 namespace {
@@ -278,7 +298,11 @@ void PairEllipsoidBK::compute(int eflag, int vflag) {
   ev_init(eflag, vflag);
   if (!history_->slots_match_neighbor_list())
     fail_one(error, FLERR, style_prefix() + "contact history is out of step with the neighbor list (internal error)");
-  gather_bodies(true);
+  // Shapes after every list build (new ghosts, reordered atoms) and in the setup of each run
+  // (a shape may have been set since); quaternions every step.
+  const bool with_shapes = update->setupflag != 0 || neighbor->ncalls != shapes_for_build_;
+  gather_bodies(true, with_shapes);
+  if (with_shapes) shapes_for_build_ = neighbor->ncalls;
 
   const int nlocal = atom->nlocal;
   const int nall = nlocal + atom->nghost;

@@ -5,8 +5,9 @@
 //   pair_style ellipsoid/bk [hertz hale|exact]
 //   pair_coeff I J E nu Y [keyword value ...]          (see pair_coefficients.hpp, docs/lammps.md)
 //
-// Shapes and quaternions of owned atoms come from an internal compute property/atom; the pair
-// style forwards them to ghost atoms itself. Contact history lives in fix ellipsoid/bk/history,
+// Shapes and quaternions of owned atoms come from internal computes property/atom; the pair
+// style forwards them to ghost atoms itself: shapes only after the ghosts were rebuilt (they do
+// not change within a run), quaternions every step. Contact history lives in fix ellipsoid/bk/history,
 // which this style creates. Time integration: fix nve/asphere (it integrates the torques).
 
 #include <cstdint>
@@ -44,7 +45,8 @@ class PairEllipsoidBK : public LAMMPS_NS::Pair {
  public:
   static constexpr const char* kStyle = "ellipsoid/bk";
   static constexpr const char* kHistoryFixId = "ELLC_BK_HISTORY";
-  static constexpr const char* kBodiesComputeId = "ELLC_BK_BODIES";
+  static constexpr const char* kBodiesComputeId = "ELLC_BK_BODIES";       // shapes and quaternions
+  static constexpr const char* kOrientationsComputeId = "ELLC_BK_QUATS";  // quaternions only
 
   explicit PairEllipsoidBK(LAMMPS_NS::LAMMPS* lmp);
   ~PairEllipsoidBK() override;
@@ -93,14 +95,16 @@ class PairEllipsoidBK : public LAMMPS_NS::Pair {
   [[nodiscard]] bool keeps_contacts() const { return keep_contacts_; }
 
  private:
-  static constexpr int kBodyValues = 7;
+  static constexpr int kBodyValues = 7;  // semi-axes (3), then quaternion w i j k (4)
+  static constexpr int kShapeValues = 3;
   static constexpr int kSingleExtra = 12;  // semi-axes (3), quaternion w i j k (4)
 
   void allocate();
   [[nodiscard]] std::size_t type_index(int i, int j) const {
     return static_cast<std::size_t>(i) * static_cast<std::size_t>(atom->ntypes + 1) + static_cast<std::size_t>(j);
   }
-  void gather_bodies(bool to_ghosts);
+  // Shapes (with_shapes) and quaternions of owned atoms into bodies_, then (to_ghosts) to ghosts.
+  void gather_bodies(bool to_ghosts, bool with_shapes);
   void check_shapes();
 
   ellc::HertzMode hertz_mode_ = ellc::HertzMode::hale;
@@ -110,6 +114,11 @@ class PairEllipsoidBK : public LAMMPS_NS::Pair {
   std::vector<double> type_radius_;                      // largest semi-axis of any atom of the type
   FixContactHistory* history_ = nullptr;
   LAMMPS_NS::Compute* bodies_compute_ = nullptr;
+  LAMMPS_NS::Compute* orientations_compute_ = nullptr;
+  // neighbor->ncalls when bodies_ last got every atom's shape: ghosts (and the order of owned
+  // atoms) change only when lists are built, so until the next build quaternions suffice.
+  LAMMPS_NS::bigint shapes_for_build_ = -1;
+  int forward_first_value_ = 0;  // what pack/unpack_forward_comm move: values [first, kBodyValues)
   // Everything one atom contributes to its pairs, in one place so that a pair touches few cache
   // lines: the posed ellipsoid, its motion and r̂ = (abc)^{1/3}. Owned + ghost, rebuilt every step.
   struct PosedAtom {
