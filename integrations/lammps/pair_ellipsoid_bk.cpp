@@ -63,17 +63,25 @@ void PairEllipsoidBK::allocate() {
 }
 
 void PairEllipsoidBK::settings(int narg, char** arg) {
+  skip_proven_separated_ = true;
   for (int at = 0; at < narg; at += 2) {
     const std::string keyword = arg[at];
-    if (keyword != "hertz" || at + 1 >= narg)
-      fail(error, FLERR, style_prefix() + "unknown setting '" + keyword + "' (expected: hertz hale|exact)");
+    if ((keyword != "hertz" && keyword != "skip_proven_separated") || at + 1 >= narg)
+      fail(error, FLERR,
+           style_prefix() + "unknown setting '" + keyword +
+               "' (expected: hertz hale|exact, skip_proven_separated yes|no)");
     const std::string value = arg[at + 1];
-    if (value == "hale")
+    if (keyword == "skip_proven_separated") {
+      if (value != "yes" && value != "no")
+        fail(error, FLERR, style_prefix() + "skip_proven_separated must be yes or no, got '" + value + "'");
+      skip_proven_separated_ = value == "yes";
+    } else if (value == "hale") {
       hertz_mode_ = ellc::HertzMode::hale;
-    else if (value == "exact")
+    } else if (value == "exact") {
       hertz_mode_ = ellc::HertzMode::exact;
-    else
+    } else {
       fail(error, FLERR, style_prefix() + "hertz must be hale or exact, got '" + value + "'");
+    }
   }
   // Allocated here so a missing pair_coeff is reported by init_one with the types it concerns.
   if (!allocated) allocate();
@@ -303,6 +311,13 @@ void PairEllipsoidBK::compute(int eflag, int vflag) {
   const bool with_shapes = update->setupflag != 0 || neighbor->ncalls != shapes_for_build_;
   gather_bodies(true, with_shapes);
   if (with_shapes) shapes_for_build_ = neighbor->ncalls;
+  // Proven-apart pairs (the built-in engine's skip_proven_separated): a pair found apart with a
+  // clearance along its stored separating axis stays apart while its two bodies' points move less
+  // than that in total, and evaluating it again would change nothing (PairSolution::clearance).
+  // Travel and these budgets restart with every list build (new slots) and every run's setup
+  // (atoms may have been moved between runs).
+  const bool restart_travel = with_shapes;
+  if (restart_travel) history_->clear_slot_budgets();
 
   const int nlocal = atom->nlocal;
   const int nall = nlocal + atom->nghost;
@@ -316,6 +331,7 @@ void PairEllipsoidBK::compute(int eflag, int vflag) {
   // The setup of a run recomputes the forces of the current step, whose contacts were already
   // advanced by the last step of the previous run (or are fresh): the history must not move again.
   const bool during_setup = update->setupflag != 0;
+  const bool skip_apart = skip_proven_separated_ && !during_setup;
   const int history_size = kHistoryDoubles;
   std::array<double, kHistoryDoubles> scratch{};
 
@@ -325,6 +341,8 @@ void PairEllipsoidBK::compute(int eflag, int vflag) {
   if (atoms_.size() < static_cast<std::size_t>(nall)) atoms_.resize(static_cast<std::size_t>(nall));
   posed_.assign(static_cast<std::size_t>(nall), 0);
   spheres_.resize(static_cast<std::size_t>(nall));
+  travel_.resize(static_cast<std::size_t>(nall));
+  last_pose_.resize(static_cast<std::size_t>(nall) * kPoseValues);
   for (int index = 0; index < nall; ++index) {
     const double* body = &bodies_[static_cast<std::size_t>(index) * kBodyValues];
     const double largest = std::max({body[0], body[1], body[2]});
@@ -335,10 +353,28 @@ void PairEllipsoidBK::compute(int eflag, int vflag) {
                    " is larger than any atom of its type was at the start of the run; re-run to update "
                    "the contact cutoffs");
     spheres_[static_cast<std::size_t>(index)] = {x[index][0], x[index][1], x[index][2], largest};
+    // No point of the body moved more than its centre plus the chord of the rotation at the
+    // bounding radius: 2 sin(θ/2) R ≤ 2 |q − q_last| R for unit quaternions (|q − q_last| ≥ √2
+    // when their dot product is negative, and 2√2 R exceeds any rotation's chord). The factors and
+    // the last term cover rounding and the quaternions' normalisation (|q| = 1 to rounding).
+    double* last = &last_pose_[static_cast<std::size_t>(index) * kPoseValues];
+    const double* quaternion = body + kShapeValues;
+    if (restart_travel) {
+      travel_[static_cast<std::size_t>(index)] = 0.0;
+    } else {
+      double moved_sq = 0.0, turned_sq = 0.0;
+      for (int k = 0; k < 3; ++k) moved_sq += (x[index][k] - last[k]) * (x[index][k] - last[k]);
+      for (int k = 0; k < 4; ++k) turned_sq += (quaternion[k] - last[3 + k]) * (quaternion[k] - last[3 + k]);
+      travel_[static_cast<std::size_t>(index)] +=
+          std::sqrt(moved_sq) * (1.0 + 1e-12) + 2.0 * std::sqrt(turned_sq) * largest * (1.0 + 1e-9) + 1e-12 * largest;
+    }
+    std::copy(x[index], x[index] + 3, last);
+    std::copy(quaternion, quaternion + 4, last + 3);
   }
   for (int index = 0; index < nlocal; ++index) pose_atom(index);
 
   long touching = 0;
+  long proven_apart = 0;
   contacts_.clear();
   const bool keep_contacts = keep_contacts_;
   const NeighList* neighbors = list;
@@ -373,7 +409,13 @@ void PairEllipsoidBK::compute(int eflag, int vflag) {
           double* history = history_->slot_values(i, jj);
           std::fill(history, history + kHistoryDoubles, 0.0);
           history_->set_slot_active(i, jj, false);
+          history_->set_slot_budget(i, jj, 0.0);  // the proof needs the separating axis just dropped
         }
+        continue;
+      }
+      if (skip_apart &&
+          travel_[static_cast<std::size_t>(i)] + travel_[static_cast<std::size_t>(j)] < history_->slot_budget(i, jj)) {
+        ++proven_apart;  // still apart along the stored axis: solve_pair's shortcut would say so
         continue;
       }
       if (posed_[static_cast<std::size_t>(j)] == 0) pose_atom(j);
@@ -405,7 +447,16 @@ void PairEllipsoidBK::compute(int eflag, int vflag) {
         error->warning(FLERR, style_prefix() + "the narrow phase did not converge for atoms " + std::to_string(tag[a]) +
                                   " and " + std::to_string(tag[b]) + " at step " + std::to_string(update->ntimestep) +
                                   "; the pair is treated as not touching (reported once per rank)");
-      if (!during_setup) history_->set_slot_active(i, jj, result.touching || result.keep_warm_start);
+      if (!during_setup) {
+        history_->set_slot_active(i, jj, result.touching || result.keep_warm_start);
+        // The engine's margin: the clearance carries rounding of a few ulp of the bodies' size.
+        const double reach =
+            spheres_[static_cast<std::size_t>(i)].radius + spheres_[static_cast<std::size_t>(j)].radius;
+        const double usable = result.keep_warm_start ? result.clearance - 1e-12 * reach : 0.0;
+        history_->set_slot_budget(
+            i, jj,
+            usable > 0.0 ? travel_[static_cast<std::size_t>(i)] + travel_[static_cast<std::size_t>(j)] + usable : 0.0);
+      }
       if (!result.touching) continue;
       ++touching;
 
@@ -446,6 +497,7 @@ void PairEllipsoidBK::compute(int eflag, int vflag) {
     }
   }
   touching_pairs_ = touching;
+  pairs_proven_apart_ = proven_apart;
   computed_at_ = update->ntimestep;
   if (vflag_fdotr) virial_fdotr_compute();
 }
@@ -487,7 +539,8 @@ double PairEllipsoidBK::single(int i, int j, int /*itype*/, int /*jtype*/, doubl
 
 // Restart files carry the settings and every explicit pair_coeff line; mixing is redone on read.
 void PairEllipsoidBK::write_restart_settings(FILE* file) {
-  const int mode = hertz_mode_ == ellc::HertzMode::exact ? 1 : 0;
+  // Bit 0: hertz exact; bit 1: skip_proven_separated no (so files of earlier builds read as yes).
+  const int mode = (hertz_mode_ == ellc::HertzMode::exact ? 1 : 0) | (skip_proven_separated_ ? 0 : 2);
   std::fwrite(&mode, sizeof(int), 1, file);
 }
 
@@ -495,7 +548,8 @@ void PairEllipsoidBK::read_restart_settings(FILE* file) {
   int mode = 0;
   if (comm->me == 0) utils::sfread(FLERR, &mode, sizeof(int), 1, file, nullptr, error);
   MPI_Bcast(&mode, 1, MPI_INT, 0, world);
-  hertz_mode_ = mode == 1 ? ellc::HertzMode::exact : ellc::HertzMode::hale;
+  hertz_mode_ = (mode & 1) != 0 ? ellc::HertzMode::exact : ellc::HertzMode::hale;
+  skip_proven_separated_ = (mode & 2) == 0;
 }
 
 void PairEllipsoidBK::write_restart(FILE* file) {
@@ -532,6 +586,7 @@ void PairEllipsoidBK::read_restart(FILE* file) {
 double PairEllipsoidBK::memory_usage() {
   return static_cast<double>(bodies_.capacity() * sizeof(double) + atoms_.capacity() * sizeof(PosedAtom) +
                              spheres_.capacity() * sizeof(BoundingSphere) +
+                             (travel_.capacity() + last_pose_.capacity()) * sizeof(double) +
                              contacts_.capacity() * sizeof(ContactRecord));
 }
 

@@ -2,7 +2,7 @@
 // pair_style ellipsoid/bk: the Becker–Kamlah elastoplastic normal contact between ellipsoids
 // (atom_style ellipsoid), with normal damping and tangential Coulomb friction with history.
 //
-//   pair_style ellipsoid/bk [hertz hale|exact]
+//   pair_style ellipsoid/bk [hertz hale|exact] [skip_proven_separated yes|no]
 //   pair_coeff I J E nu Y [keyword value ...]          (see pair_coefficients.hpp, docs/lammps.md)
 //
 // Shapes and quaternions of owned atoms come from internal computes property/atom; the pair
@@ -72,6 +72,8 @@ class PairEllipsoidBK : public LAMMPS_NS::Pair {
 
   // Pairs in contact (δ > 0) on this rank at the last force evaluation (diagnostics, benchmark).
   [[nodiscard]] long touching_pairs() const { return touching_pairs_; }
+  // Pairs skipped at the last force evaluation because they were proven apart (see compute()).
+  [[nodiscard]] long pairs_proven_apart() const { return pairs_proven_apart_; }
 
   // For fix wall/ellipsoid/bk: the bodies this step's compute() posed, owned and ghost atoms,
   // valid from compute() until the atoms move (computed_at() is that step).
@@ -97,6 +99,7 @@ class PairEllipsoidBK : public LAMMPS_NS::Pair {
  private:
   static constexpr int kBodyValues = 7;  // semi-axes (3), then quaternion w i j k (4)
   static constexpr int kShapeValues = 3;
+  static constexpr int kPoseValues = 7;    // last_pose_: centre (3), quaternion (4)
   static constexpr int kSingleExtra = 12;  // semi-axes (3), quaternion w i j k (4)
 
   void allocate();
@@ -108,6 +111,7 @@ class PairEllipsoidBK : public LAMMPS_NS::Pair {
   void check_shapes();
 
   ellc::HertzMode hertz_mode_ = ellc::HertzMode::hale;
+  bool skip_proven_separated_ = true;                    // pair_style setting; `no` evaluates every candidate pair
   std::vector<char> given_;                              // 1 where pair_coeff I J was given, (ntypes+1)²
   std::vector<TypeCoefficients> type_coefficients_;      // as given by pair_coeff, (ntypes+1)²
   std::vector<ellc::InteractionContext> pair_contexts_;  // resolved (explicit or mixed) by init_one
@@ -137,6 +141,11 @@ class PairEllipsoidBK : public LAMMPS_NS::Pair {
   std::vector<PosedAtom> atoms_;  // owned atoms posed every step, ghosts when a pair first needs them
   std::vector<char> posed_;       // 1 where atoms_ holds this step's pose
   std::vector<BoundingSphere> spheres_;
+  // Per atom, owned + ghost, since the last list build: how far any point of the body may have
+  // moved (travel_), and its centre and quaternion at the last force evaluation (last_pose_).
+  std::vector<double> travel_;
+  std::vector<double> last_pose_;
+  long pairs_proven_apart_ = 0;
   Eigen::Vector3d last_semi_axes_ = Eigen::Vector3d::Zero();  // r̂ of the last atom posed, reused for
   double last_mean_radius_ = 0.0;                             // equal semi-axes (one cube root less)
   std::vector<std::pair<int, int>> candidates_;               // (jj, j) of one atom i whose bounding spheres meet
