@@ -352,23 +352,27 @@ void PairEllipsoidBK::compute(int eflag, int vflag) {
                style_prefix() + "atom " + std::to_string(tag[index]) +
                    " is larger than any atom of its type was at the start of the run; re-run to update "
                    "the contact cutoffs");
-    spheres_[static_cast<std::size_t>(index)] = {x[index][0], x[index][1], x[index][2], largest};
+    // Read once into locals: stores through `last` could otherwise alias x and the quaternion.
+    const double centre[3] = {x[index][0], x[index][1], x[index][2]};
+    const double quaternion[4] = {body[kShapeValues], body[kShapeValues + 1], body[kShapeValues + 2],
+                                  body[kShapeValues + 3]};
+    spheres_[static_cast<std::size_t>(index)] = {centre[0], centre[1], centre[2], largest};
     // No point of the body moved more than its centre plus the chord of the rotation at the
     // bounding radius: 2 sin(θ/2) R ≤ 2 |q − q_last| R for unit quaternions (|q − q_last| ≥ √2
     // when their dot product is negative, and 2√2 R exceeds any rotation's chord). The factors and
     // the last term cover rounding and the quaternions' normalisation (|q| = 1 to rounding).
     double* last = &last_pose_[static_cast<std::size_t>(index) * kPoseValues];
-    const double* quaternion = body + kShapeValues;
+    double& travel = travel_[static_cast<std::size_t>(index)];
     if (restart_travel) {
-      travel_[static_cast<std::size_t>(index)] = 0.0;
+      travel = 0.0;
     } else {
-      double moved_sq = 0.0, turned_sq = 0.0;
-      for (int k = 0; k < 3; ++k) moved_sq += (x[index][k] - last[k]) * (x[index][k] - last[k]);
-      for (int k = 0; k < 4; ++k) turned_sq += (quaternion[k] - last[3 + k]) * (quaternion[k] - last[3 + k]);
-      travel_[static_cast<std::size_t>(index)] +=
-          std::sqrt(moved_sq) * (1.0 + 1e-12) + 2.0 * std::sqrt(turned_sq) * largest * (1.0 + 1e-9) + 1e-12 * largest;
+      const double dx = centre[0] - last[0], dy = centre[1] - last[1], dz = centre[2] - last[2];
+      const double dw = quaternion[0] - last[3], di = quaternion[1] - last[4], dj = quaternion[2] - last[5],
+                   dk = quaternion[3] - last[6];
+      travel += std::sqrt(dx * dx + dy * dy + dz * dz) * (1.0 + 1e-12) +
+                std::sqrt(dw * dw + di * di + dj * dj + dk * dk) * (2.0 * (1.0 + 1e-9)) * largest + 1e-12 * largest;
     }
-    std::copy(x[index], x[index] + 3, last);
+    std::copy(centre, centre + 3, last);
     std::copy(quaternion, quaternion + 4, last + 3);
   }
   for (int index = 0; index < nlocal; ++index) pose_atom(index);
