@@ -131,6 +131,7 @@ void FixContactHistory::post_neighbor() {
   }
   slot_values_.assign(total * width, 0.0);
   slot_active_.assign(total, 0);
+  slot_budget_.assign(total, 0.0);
 
   for (int ii = 0; ii < list->inum; ++ii) {
     const int i = list->ilist[ii];
@@ -235,6 +236,7 @@ double FixContactHistory::memory_usage() {
   bytes += static_cast<double>(slot_offset_.capacity() * sizeof(std::size_t));
   bytes += static_cast<double>(slot_values_.capacity() * sizeof(double));
   bytes += static_cast<double>(slot_active_.capacity());
+  bytes += static_cast<double>(slot_budget_.capacity() * sizeof(double));
   return bytes;
 }
 

@@ -14,6 +14,7 @@
 // The values of one contact are stored in a canonical orientation (body I = the lower atom ID),
 // so both copies are identical and no sign convention has to be applied when they swap sides.
 
+#include <algorithm>
 #include <cstddef>
 #include <cstdio>
 #include <vector>
@@ -70,6 +71,15 @@ class FixContactHistory : public LAMMPS_NS::Fix {
   void set_slot_active(int i, int jj, bool active) {
     slot_active_[slot_offset_[static_cast<std::size_t>(i)] + static_cast<std::size_t>(jj)] = active ? 1 : 0;
   }
+  // The pair style's proof that a slot's pair is apart (its "clearance budget", see
+  // PairEllipsoidBK::compute): 0 when there is none. Zero for every slot of a new list.
+  [[nodiscard]] double slot_budget(int i, int jj) const {
+    return slot_budget_[slot_offset_[static_cast<std::size_t>(i)] + static_cast<std::size_t>(jj)];
+  }
+  void set_slot_budget(int i, int jj, double budget) {
+    slot_budget_[slot_offset_[static_cast<std::size_t>(i)] + static_cast<std::size_t>(jj)] = budget;
+  }
+  void clear_slot_budgets() { std::fill(slot_budget_.begin(), slot_budget_.end(), 0.0); }
   // Slots holding a record on this rank: contacts, and near pairs that keep only the narrow
   // phase's separating axis (diagnostics).
   [[nodiscard]] long active_contacts() const;
@@ -93,6 +103,7 @@ class FixContactHistory : public LAMMPS_NS::Fix {
   std::vector<std::size_t> slot_offset_;
   std::vector<double> slot_values_;
   std::vector<unsigned char> slot_active_;
+  std::vector<double> slot_budget_;
   int nlocal_neigh_ = 0;
   int nall_neigh_ = 0;
   bool slots_valid_ = false;

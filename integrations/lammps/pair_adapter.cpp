@@ -36,6 +36,7 @@ PairEvaluation evaluate_pair(const AtomBody& a, const AtomBody& b, const ellc::I
   if (solution.status == ellc::PairStatus::separated) {
     record.end_contact();  // history starts at δ > 0 and ends at δ ≤ 0 (docs/model.md §5)
     result.keep_warm_start = record.warm_valid != 0.0;
+    result.clearance = solution.clearance;
     if (!result.keep_warm_start) record = ellc::ContactHistory{};
     record.write_to(history);
     return result;

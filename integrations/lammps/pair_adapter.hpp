@@ -43,6 +43,9 @@ struct PairEvaluation {
   bool geometry_failed = false;  // the narrow phase could not resolve the pair (invalid bodies)
   int iterations = 0;            // narrow-phase Newton steps
   bool keep_warm_start = false;  // not touching, but the history holds a separating axis to reuse
+  // Not touching: solve_pair's clearance (PairSolution::clearance): while the two bodies' points
+  // move less than this in total, evaluating the pair again would change nothing. 0 = unknown.
+  double clearance = 0.0;
   double overlap = 0.0;
   double normal_force = 0.0;  // the law's force with damping, ≥ 0
   ellc::LawResult law;

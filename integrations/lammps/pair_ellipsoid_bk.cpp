@@ -39,6 +39,7 @@ PairEllipsoidBK::~PairEllipsoidBK() {
   // The history fix and the shape compute belong to this style; remove them with it.
   if (modify->find_fix(kHistoryFixId) >= 0) modify->delete_fix(kHistoryFixId);
   if (modify->find_compute(kBodiesComputeId) >= 0) modify->delete_compute(kBodiesComputeId);
+  if (modify->find_compute(kOrientationsComputeId) >= 0) modify->delete_compute(kOrientationsComputeId);
   if (allocated) {
     memory->destroy(setflag);
     memory->destroy(cutsq);
@@ -62,17 +63,25 @@ void PairEllipsoidBK::allocate() {
 }
 
 void PairEllipsoidBK::settings(int narg, char** arg) {
+  skip_proven_separated_ = true;
   for (int at = 0; at < narg; at += 2) {
     const std::string keyword = arg[at];
-    if (keyword != "hertz" || at + 1 >= narg)
-      fail(error, FLERR, style_prefix() + "unknown setting '" + keyword + "' (expected: hertz hale|exact)");
+    if ((keyword != "hertz" && keyword != "skip_proven_separated") || at + 1 >= narg)
+      fail(error, FLERR,
+           style_prefix() + "unknown setting '" + keyword +
+               "' (expected: hertz hale|exact, skip_proven_separated yes|no)");
     const std::string value = arg[at + 1];
-    if (value == "hale")
+    if (keyword == "skip_proven_separated") {
+      if (value != "yes" && value != "no")
+        fail(error, FLERR, style_prefix() + "skip_proven_separated must be yes or no, got '" + value + "'");
+      skip_proven_separated_ = value == "yes";
+    } else if (value == "hale") {
       hertz_mode_ = ellc::HertzMode::hale;
-    else if (value == "exact")
+    } else if (value == "exact") {
       hertz_mode_ = ellc::HertzMode::exact;
-    else
+    } else {
       fail(error, FLERR, style_prefix() + "hertz must be hale or exact, got '" + value + "'");
+    }
   }
   // Allocated here so a missing pair_coeff is reported by init_one with the types it concerns.
   if (!allocated) allocate();
@@ -108,12 +117,17 @@ void PairEllipsoidBK::init_style() {
   comm->ghost_velocity = 1;  // relative velocities at contact points of ghost partners
   neighbor->request(this, instance_me);
 
-  // Internal compute: shapes (diameters) and quaternions of owned atoms.
+  // Internal computes: shapes (diameters) and quaternions of owned atoms; quaternions alone.
   if (modify->find_compute(kBodiesComputeId) < 0)
     modify->add_compute(std::string(kBodiesComputeId) +
                         " all property/atom shapex shapey shapez quatw quati quatj quatk");
+  if (modify->find_compute(kOrientationsComputeId) < 0)
+    modify->add_compute(std::string(kOrientationsComputeId) + " all property/atom quatw quati quatj quatk");
   bodies_compute_ = modify->compute[modify->find_compute(kBodiesComputeId)];
   bodies_compute_->init();
+  orientations_compute_ = modify->compute[modify->find_compute(kOrientationsComputeId)];
+  orientations_compute_->init();
+  shapes_for_build_ = -1;
 
   // History fix. On a restarted run, creating it here picks up its records from the restart file.
   if (modify->find_fix(kHistoryFixId) < 0)
@@ -136,7 +150,7 @@ void PairEllipsoidBK::init_style() {
 
 // Per-type cutoff radii, and the bad-input checks on shapes: point particles, calibrated range.
 void PairEllipsoidBK::check_shapes() {
-  gather_bodies(false);  // owned atoms only: ghost lists are rebuilt later, in the setup of the run
+  gather_bodies(false, true);  // owned atoms only: ghost lists are rebuilt later, in the setup of the run
   const int ntypes = atom->ntypes;
   std::vector<double> radius(static_cast<std::size_t>(ntypes + 1), 0.0);
   tagint first_point = 0;
@@ -206,34 +220,48 @@ double PairEllipsoidBK::init_one(int i, int j) {
   return cut > 0.0 ? cut : 1.0;
 }
 
-// Shapes and quaternions of owned atoms from the compute, then (to_ghosts) to ghost atoms.
-void PairEllipsoidBK::gather_bodies(bool to_ghosts) {
+// Owned atoms from the computes, then (to_ghosts) ghost atoms by a forward communication of
+// values [forward_first_value_, kBodyValues) per atom: 7 doubles with shapes, 4 without.
+void PairEllipsoidBK::gather_bodies(bool to_ghosts, bool with_shapes) {
   const int nmax = atom->nmax;
   if (bodies_.size() < static_cast<std::size_t>(nmax) * kBodyValues) {
     bodies_.resize(static_cast<std::size_t>(nmax) * kBodyValues);
   }
-  bodies_compute_->compute_peratom();
-  bodies_compute_->invoked_peratom = update->ntimestep;
-  double** values = bodies_compute_->array_atom;
+  Compute* source = with_shapes ? bodies_compute_ : orientations_compute_;
+  source->compute_peratom();
+  source->invoked_peratom = update->ntimestep;
+  double** values = source->array_atom;
   for (int i = 0; i < atom->nlocal; ++i) {
     double* body = &bodies_[static_cast<std::size_t>(i) * kBodyValues];
-    for (int k = 0; k < 3; ++k) body[k] = 0.5 * values[i][k];  // diameters → semi-axes
-    for (int k = 3; k < kBodyValues; ++k) body[k] = values[i][k];
+    const double* row = values[i];
+    if (with_shapes) {
+      for (int k = 0; k < kShapeValues; ++k) body[k] = 0.5 * row[k];  // diameters → semi-axes
+      row += kShapeValues;
+    }
+    std::copy(row, row + (kBodyValues - kShapeValues), body + kShapeValues);
   }
-  if (to_ghosts) comm->forward_comm_pair(this);
+  if (to_ghosts) {
+    forward_first_value_ = with_shapes ? 0 : kShapeValues;
+    comm->forward_comm_pair(this);
+  }
 }
 
 int PairEllipsoidBK::pack_forward_comm(int n, int* send_list, double* buffer, int /*pbc_flag*/, int* /*pbc*/) {
+  const int width = kBodyValues - forward_first_value_;
   for (int k = 0; k < n; ++k) {
     const double* body = &bodies_[static_cast<std::size_t>(send_list[k]) * kBodyValues];
-    std::copy(body, body + kBodyValues, buffer + static_cast<std::ptrdiff_t>(k) * kBodyValues);
+    std::copy(body + forward_first_value_, body + kBodyValues, buffer + static_cast<std::ptrdiff_t>(k) * width);
   }
-  return n * kBodyValues;
+  return n * width;
 }
 
 void PairEllipsoidBK::unpack_forward_comm(int n, int first, double* buffer) {
-  std::copy(buffer, buffer + static_cast<std::ptrdiff_t>(n) * kBodyValues,
-            bodies_.begin() + static_cast<std::ptrdiff_t>(first) * kBodyValues);
+  const int width = kBodyValues - forward_first_value_;
+  for (int k = 0; k < n; ++k) {
+    const double* from = buffer + static_cast<std::ptrdiff_t>(k) * width;
+    std::copy(from, from + width,
+              bodies_.begin() + static_cast<std::ptrdiff_t>(first + k) * kBodyValues + forward_first_value_);
+  }
 }
 
 namespace {
@@ -278,7 +306,18 @@ void PairEllipsoidBK::compute(int eflag, int vflag) {
   ev_init(eflag, vflag);
   if (!history_->slots_match_neighbor_list())
     fail_one(error, FLERR, style_prefix() + "contact history is out of step with the neighbor list (internal error)");
-  gather_bodies(true);
+  // Shapes after every list build (new ghosts, reordered atoms) and in the setup of each run
+  // (a shape may have been set since); quaternions every step.
+  const bool with_shapes = update->setupflag != 0 || neighbor->ncalls != shapes_for_build_;
+  gather_bodies(true, with_shapes);
+  if (with_shapes) shapes_for_build_ = neighbor->ncalls;
+  // Proven-apart pairs (the built-in engine's skip_proven_separated): a pair found apart with a
+  // clearance along its stored separating axis stays apart while its two bodies' points move less
+  // than that in total, and evaluating it again would change nothing (PairSolution::clearance).
+  // Travel and these budgets restart with every list build (new slots) and every run's setup
+  // (atoms may have been moved between runs).
+  const bool restart_travel = with_shapes;
+  if (restart_travel) history_->clear_slot_budgets();
 
   const int nlocal = atom->nlocal;
   const int nall = nlocal + atom->nghost;
@@ -292,6 +331,7 @@ void PairEllipsoidBK::compute(int eflag, int vflag) {
   // The setup of a run recomputes the forces of the current step, whose contacts were already
   // advanced by the last step of the previous run (or are fresh): the history must not move again.
   const bool during_setup = update->setupflag != 0;
+  const bool skip_apart = skip_proven_separated_ && !during_setup;
   const int history_size = kHistoryDoubles;
   std::array<double, kHistoryDoubles> scratch{};
 
@@ -301,6 +341,8 @@ void PairEllipsoidBK::compute(int eflag, int vflag) {
   if (atoms_.size() < static_cast<std::size_t>(nall)) atoms_.resize(static_cast<std::size_t>(nall));
   posed_.assign(static_cast<std::size_t>(nall), 0);
   spheres_.resize(static_cast<std::size_t>(nall));
+  travel_.resize(static_cast<std::size_t>(nall));
+  last_pose_.resize(static_cast<std::size_t>(nall) * kPoseValues);
   for (int index = 0; index < nall; ++index) {
     const double* body = &bodies_[static_cast<std::size_t>(index) * kBodyValues];
     const double largest = std::max({body[0], body[1], body[2]});
@@ -310,11 +352,33 @@ void PairEllipsoidBK::compute(int eflag, int vflag) {
                style_prefix() + "atom " + std::to_string(tag[index]) +
                    " is larger than any atom of its type was at the start of the run; re-run to update "
                    "the contact cutoffs");
-    spheres_[static_cast<std::size_t>(index)] = {x[index][0], x[index][1], x[index][2], largest};
+    // Read once into locals: stores through `last` could otherwise alias x and the quaternion.
+    const double centre[3] = {x[index][0], x[index][1], x[index][2]};
+    const double quaternion[4] = {body[kShapeValues], body[kShapeValues + 1], body[kShapeValues + 2],
+                                  body[kShapeValues + 3]};
+    spheres_[static_cast<std::size_t>(index)] = {centre[0], centre[1], centre[2], largest};
+    // No point of the body moved more than its centre plus the chord of the rotation at the
+    // bounding radius: 2 sin(θ/2) R ≤ 2 |q − q_last| R for unit quaternions (|q − q_last| ≥ √2
+    // when their dot product is negative, and 2√2 R exceeds any rotation's chord). The factors and
+    // the last term cover rounding and the quaternions' normalisation (|q| = 1 to rounding).
+    double* last = &last_pose_[static_cast<std::size_t>(index) * kPoseValues];
+    double& travel = travel_[static_cast<std::size_t>(index)];
+    if (restart_travel) {
+      travel = 0.0;
+    } else {
+      const double dx = centre[0] - last[0], dy = centre[1] - last[1], dz = centre[2] - last[2];
+      const double dw = quaternion[0] - last[3], di = quaternion[1] - last[4], dj = quaternion[2] - last[5],
+                   dk = quaternion[3] - last[6];
+      travel += std::sqrt(dx * dx + dy * dy + dz * dz) * (1.0 + 1e-12) +
+                std::sqrt(dw * dw + di * di + dj * dj + dk * dk) * (2.0 * (1.0 + 1e-9)) * largest + 1e-12 * largest;
+    }
+    std::copy(centre, centre + 3, last);
+    std::copy(quaternion, quaternion + 4, last + 3);
   }
   for (int index = 0; index < nlocal; ++index) pose_atom(index);
 
   long touching = 0;
+  long proven_apart = 0;
   contacts_.clear();
   const bool keep_contacts = keep_contacts_;
   const NeighList* neighbors = list;
@@ -349,7 +413,13 @@ void PairEllipsoidBK::compute(int eflag, int vflag) {
           double* history = history_->slot_values(i, jj);
           std::fill(history, history + kHistoryDoubles, 0.0);
           history_->set_slot_active(i, jj, false);
+          history_->set_slot_budget(i, jj, 0.0);  // the proof needs the separating axis just dropped
         }
+        continue;
+      }
+      if (skip_apart &&
+          travel_[static_cast<std::size_t>(i)] + travel_[static_cast<std::size_t>(j)] < history_->slot_budget(i, jj)) {
+        ++proven_apart;  // still apart along the stored axis: solve_pair's shortcut would say so
         continue;
       }
       if (posed_[static_cast<std::size_t>(j)] == 0) pose_atom(j);
@@ -381,7 +451,16 @@ void PairEllipsoidBK::compute(int eflag, int vflag) {
         error->warning(FLERR, style_prefix() + "the narrow phase did not converge for atoms " + std::to_string(tag[a]) +
                                   " and " + std::to_string(tag[b]) + " at step " + std::to_string(update->ntimestep) +
                                   "; the pair is treated as not touching (reported once per rank)");
-      if (!during_setup) history_->set_slot_active(i, jj, result.touching || result.keep_warm_start);
+      if (!during_setup) {
+        history_->set_slot_active(i, jj, result.touching || result.keep_warm_start);
+        // The engine's margin: the clearance carries rounding of a few ulp of the bodies' size.
+        const double reach =
+            spheres_[static_cast<std::size_t>(i)].radius + spheres_[static_cast<std::size_t>(j)].radius;
+        const double usable = result.keep_warm_start ? result.clearance - 1e-12 * reach : 0.0;
+        history_->set_slot_budget(
+            i, jj,
+            usable > 0.0 ? travel_[static_cast<std::size_t>(i)] + travel_[static_cast<std::size_t>(j)] + usable : 0.0);
+      }
       if (!result.touching) continue;
       ++touching;
 
@@ -422,6 +501,7 @@ void PairEllipsoidBK::compute(int eflag, int vflag) {
     }
   }
   touching_pairs_ = touching;
+  pairs_proven_apart_ = proven_apart;
   computed_at_ = update->ntimestep;
   if (vflag_fdotr) virial_fdotr_compute();
 }
@@ -463,7 +543,8 @@ double PairEllipsoidBK::single(int i, int j, int /*itype*/, int /*jtype*/, doubl
 
 // Restart files carry the settings and every explicit pair_coeff line; mixing is redone on read.
 void PairEllipsoidBK::write_restart_settings(FILE* file) {
-  const int mode = hertz_mode_ == ellc::HertzMode::exact ? 1 : 0;
+  // Bit 0: hertz exact; bit 1: skip_proven_separated no (so files of earlier builds read as yes).
+  const int mode = (hertz_mode_ == ellc::HertzMode::exact ? 1 : 0) | (skip_proven_separated_ ? 0 : 2);
   std::fwrite(&mode, sizeof(int), 1, file);
 }
 
@@ -471,7 +552,8 @@ void PairEllipsoidBK::read_restart_settings(FILE* file) {
   int mode = 0;
   if (comm->me == 0) utils::sfread(FLERR, &mode, sizeof(int), 1, file, nullptr, error);
   MPI_Bcast(&mode, 1, MPI_INT, 0, world);
-  hertz_mode_ = mode == 1 ? ellc::HertzMode::exact : ellc::HertzMode::hale;
+  hertz_mode_ = (mode & 1) != 0 ? ellc::HertzMode::exact : ellc::HertzMode::hale;
+  skip_proven_separated_ = (mode & 2) == 0;
 }
 
 void PairEllipsoidBK::write_restart(FILE* file) {
@@ -508,6 +590,7 @@ void PairEllipsoidBK::read_restart(FILE* file) {
 double PairEllipsoidBK::memory_usage() {
   return static_cast<double>(bodies_.capacity() * sizeof(double) + atoms_.capacity() * sizeof(PosedAtom) +
                              spheres_.capacity() * sizeof(BoundingSphere) +
+                             (travel_.capacity() + last_pose_.capacity()) * sizeof(double) +
                              contacts_.capacity() * sizeof(ContactRecord));
 }
 

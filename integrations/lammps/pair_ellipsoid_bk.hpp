@@ -2,11 +2,12 @@
 // pair_style ellipsoid/bk: the Becker–Kamlah elastoplastic normal contact between ellipsoids
 // (atom_style ellipsoid), with normal damping and tangential Coulomb friction with history.
 //
-//   pair_style ellipsoid/bk [hertz hale|exact]
+//   pair_style ellipsoid/bk [hertz hale|exact] [skip_proven_separated yes|no]
 //   pair_coeff I J E nu Y [keyword value ...]          (see pair_coefficients.hpp, docs/lammps.md)
 //
-// Shapes and quaternions of owned atoms come from an internal compute property/atom; the pair
-// style forwards them to ghost atoms itself. Contact history lives in fix ellipsoid/bk/history,
+// Shapes and quaternions of owned atoms come from internal computes property/atom; the pair
+// style forwards them to ghost atoms itself: shapes only after the ghosts were rebuilt (they do
+// not change within a run), quaternions every step. Contact history lives in fix ellipsoid/bk/history,
 // which this style creates. Time integration: fix nve/asphere (it integrates the torques).
 
 #include <cstdint>
@@ -44,7 +45,8 @@ class PairEllipsoidBK : public LAMMPS_NS::Pair {
  public:
   static constexpr const char* kStyle = "ellipsoid/bk";
   static constexpr const char* kHistoryFixId = "ELLC_BK_HISTORY";
-  static constexpr const char* kBodiesComputeId = "ELLC_BK_BODIES";
+  static constexpr const char* kBodiesComputeId = "ELLC_BK_BODIES";       // shapes and quaternions
+  static constexpr const char* kOrientationsComputeId = "ELLC_BK_QUATS";  // quaternions only
 
   explicit PairEllipsoidBK(LAMMPS_NS::LAMMPS* lmp);
   ~PairEllipsoidBK() override;
@@ -70,6 +72,8 @@ class PairEllipsoidBK : public LAMMPS_NS::Pair {
 
   // Pairs in contact (δ > 0) on this rank at the last force evaluation (diagnostics, benchmark).
   [[nodiscard]] long touching_pairs() const { return touching_pairs_; }
+  // Pairs skipped at the last force evaluation because they were proven apart (see compute()).
+  [[nodiscard]] long pairs_proven_apart() const { return pairs_proven_apart_; }
 
   // For fix wall/ellipsoid/bk: the bodies this step's compute() posed, owned and ghost atoms,
   // valid from compute() until the atoms move (computed_at() is that step).
@@ -93,23 +97,32 @@ class PairEllipsoidBK : public LAMMPS_NS::Pair {
   [[nodiscard]] bool keeps_contacts() const { return keep_contacts_; }
 
  private:
-  static constexpr int kBodyValues = 7;
+  static constexpr int kBodyValues = 7;  // semi-axes (3), then quaternion w i j k (4)
+  static constexpr int kShapeValues = 3;
+  static constexpr int kPoseValues = 7;    // last_pose_: centre (3), quaternion (4)
   static constexpr int kSingleExtra = 12;  // semi-axes (3), quaternion w i j k (4)
 
   void allocate();
   [[nodiscard]] std::size_t type_index(int i, int j) const {
     return static_cast<std::size_t>(i) * static_cast<std::size_t>(atom->ntypes + 1) + static_cast<std::size_t>(j);
   }
-  void gather_bodies(bool to_ghosts);
+  // Shapes (with_shapes) and quaternions of owned atoms into bodies_, then (to_ghosts) to ghosts.
+  void gather_bodies(bool to_ghosts, bool with_shapes);
   void check_shapes();
 
   ellc::HertzMode hertz_mode_ = ellc::HertzMode::hale;
+  bool skip_proven_separated_ = true;                    // pair_style setting; `no` evaluates every candidate pair
   std::vector<char> given_;                              // 1 where pair_coeff I J was given, (ntypes+1)²
   std::vector<TypeCoefficients> type_coefficients_;      // as given by pair_coeff, (ntypes+1)²
   std::vector<ellc::InteractionContext> pair_contexts_;  // resolved (explicit or mixed) by init_one
   std::vector<double> type_radius_;                      // largest semi-axis of any atom of the type
   FixContactHistory* history_ = nullptr;
   LAMMPS_NS::Compute* bodies_compute_ = nullptr;
+  LAMMPS_NS::Compute* orientations_compute_ = nullptr;
+  // neighbor->ncalls when bodies_ last got every atom's shape: ghosts (and the order of owned
+  // atoms) change only when lists are built, so until the next build quaternions suffice.
+  LAMMPS_NS::bigint shapes_for_build_ = -1;
+  int forward_first_value_ = 0;  // what pack/unpack_forward_comm move: values [first, kBodyValues)
   // Everything one atom contributes to its pairs, in one place so that a pair touches few cache
   // lines: the posed ellipsoid, its motion and r̂ = (abc)^{1/3}. Owned + ghost, rebuilt every step.
   struct PosedAtom {
@@ -128,6 +141,11 @@ class PairEllipsoidBK : public LAMMPS_NS::Pair {
   std::vector<PosedAtom> atoms_;  // owned atoms posed every step, ghosts when a pair first needs them
   std::vector<char> posed_;       // 1 where atoms_ holds this step's pose
   std::vector<BoundingSphere> spheres_;
+  // Per atom, owned + ghost, since the last list build: how far any point of the body may have
+  // moved (travel_), and its centre and quaternion at the last force evaluation (last_pose_).
+  std::vector<double> travel_;
+  std::vector<double> last_pose_;
+  long pairs_proven_apart_ = 0;
   Eigen::Vector3d last_semi_axes_ = Eigen::Vector3d::Zero();  // r̂ of the last atom posed, reused for
   double last_mean_radius_ = 0.0;                             // equal semi-axes (one cube root less)
   std::vector<std::pair<int, int>> candidates_;               // (jj, j) of one atom i whose bounding spheres meet

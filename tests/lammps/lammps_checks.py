@@ -209,6 +209,30 @@ def check_contacts(args):
           f"pair's to {error:.3g} (tolerance {args.tolerance:g})")
 
 
+def check_proven_apart(args):
+    """Skipping the pairs proven apart (pair_style ellipsoid/bk skip_proven_separated, the default)
+    changes nothing: atoms, compute pair/local and compute ellipsoid/bk/contacts dumps equal byte
+    for byte those of a run that evaluates every candidate pair. The input is run hot, so that
+    pairs move in and out of reach (and turn) while lists are kept for many steps."""
+    launcher = [args.mpirun, *[flag for flag in args.mpirun_flag if flag], "-np", str(args.np)] if args.mpirun else []
+    dumps = {}
+    with tempfile.TemporaryDirectory() as work:
+        for skip in ("yes", "no"):
+            directory = os.path.join(work, skip)
+            os.mkdir(directory)
+            run([*launcher, args.lmp, "-in", args.input, "-log", "none", "-var", "steps", args.steps,
+                 "-var", "dir", directory, "-var", "temperature", args.temperature,
+                 "-var", "settings", f"skip_proven_separated {skip}"], directory)
+            dumps[skip] = {}
+            for name in ("atoms.dump", "pairs.dump", "contacts.dump"):
+                with open(os.path.join(directory, name), "rb") as handle:
+                    dumps[skip][name] = handle.read()
+    for name, content in dumps["no"].items():
+        if dumps["yes"][name] != content:
+            sys.exit(f"{name} differs between skip_proven_separated yes and no")
+    print(f"skip_proven_separated yes and no: {', '.join(dumps['no'])} equal byte for byte")
+
+
 WALL_INPUT = """units micro
 atom_style ellipsoid
 boundary p p f
@@ -591,6 +615,14 @@ def main():
     contacts.add_argument("--mpirun", default="")
     contacts.add_argument("--mpirun-flag", action="append", default=[])
     contacts.add_argument("--np", type=int, default=1)
+    apart = sub.add_parser("proven_apart")
+    apart.add_argument("--lmp", required=True)
+    apart.add_argument("--input", required=True)
+    apart.add_argument("--steps", default="400")
+    apart.add_argument("--temperature", default="2e14")
+    apart.add_argument("--mpirun", default="")
+    apart.add_argument("--mpirun-flag", action="append", default=[])
+    apart.add_argument("--np", type=int, default=1)
     for name in ("export", "engines"):
         command = sub.add_parser(name)
         command.add_argument("--ellc", required=True)
@@ -606,7 +638,7 @@ def main():
             command.add_argument("--seeds", type=int, default=6)
             command.add_argument("--tolerance", type=float, default=2.0, help="in seed spreads (sd)")
     args = parser.parse_args()
-    {"export": check_export, "engines": check_engines, "contacts": check_contacts, "curve": check_curve, "mpi": check_mpi, "restart": check_restart, "wall": check_wall}[args.check](args)
+    {"export": check_export, "engines": check_engines, "contacts": check_contacts, "proven_apart": check_proven_apart, "curve": check_curve, "mpi": check_mpi, "restart": check_restart, "wall": check_wall}[args.check](args)
 
 
 if __name__ == "__main__":
