@@ -6,6 +6,7 @@
 #include <memory>
 
 #include "ellc/contact/contact_size.hpp"
+#include "ellc/contact/proven_apart.hpp"
 #include "ellc/engine/rigid_body.hpp"
 #include "fix_contact_history.hpp"
 
@@ -369,7 +370,7 @@ void PairEllipsoidBK::compute(int eflag, int vflag) {
       const double dx = centre[0] - last[0], dy = centre[1] - last[1], dz = centre[2] - last[2];
       const double dw = quaternion[0] - last[3], di = quaternion[1] - last[4], dj = quaternion[2] - last[5],
                    dk = quaternion[3] - last[6];
-      travel += std::sqrt(dx * dx + dy * dy + dz * dz) * (1.0 + 1e-12) +
+      travel += ellc::bounded_displacement(std::sqrt(dx * dx + dy * dy + dz * dz)) +
                 std::sqrt(dw * dw + di * di + dj * dj + dk * dk) * (2.0 * (1.0 + 1e-9)) * largest + 1e-12 * largest;
     }
     std::copy(centre, centre + 3, last);
@@ -453,10 +454,9 @@ void PairEllipsoidBK::compute(int eflag, int vflag) {
                                   "; the pair is treated as not touching (reported once per rank)");
       if (!during_setup) {
         history_->set_slot_active(i, jj, result.touching || result.keep_warm_start);
-        // The engine's margin: the clearance carries rounding of a few ulp of the bodies' size.
         const double reach =
             spheres_[static_cast<std::size_t>(i)].radius + spheres_[static_cast<std::size_t>(j)].radius;
-        const double usable = result.keep_warm_start ? result.clearance - 1e-12 * reach : 0.0;
+        const double usable = result.keep_warm_start ? ellc::usable_clearance(result.clearance, reach) : 0.0;
         history_->set_slot_budget(
             i, jj,
             usable > 0.0 ? travel_[static_cast<std::size_t>(i)] + travel_[static_cast<std::size_t>(j)] + usable : 0.0);

@@ -8,6 +8,7 @@
 
 #include "ellc/assert.hpp"
 #include "ellc/contact/contact_energy.hpp"
+#include "ellc/contact/proven_apart.hpp"
 #include "ellc/engine/broad_phase.hpp"
 #include "ellc/engine/equilibrium.hpp"
 #include "ellc/engine/invariants.hpp"
@@ -229,7 +230,7 @@ bool Simulation::kick_and_drift(double half_dt) noexcept {
     // No point of the body moves more than the centre's step plus the rotation angle |ω| dt times
     // the bounding radius; the factors and the 1e-15 cover the rounding of the computed motion.
     const double turn = p.angular_velocity[slot].norm() * dt * (1.0 + 1e-9) + 1e-15;
-    travel_[slot] += (p.position[slot] - before).norm() * (1.0 + 1e-12) + turn * p.bounding_radius[slot];
+    travel_[slot] += bounded_displacement((p.position[slot] - before).norm()) + turn * p.bounding_radius[slot];
     refresh_body_frame(slot);
     stale = stale || (p.position[slot] - reference_position_[slot]).squaredNorm() > limit_sq;
   }
@@ -374,8 +375,7 @@ void Simulation::evaluate_pair(std::size_t index) {
         pair_reported_[index] = 1;
       }
     }
-    // Margin: the clearance itself carries rounding of a few ulp of the bodies' size.
-    const double usable = solution.clearance - 1e-12 * reach;
+    const double usable = usable_clearance(solution.clearance, reach);
     if (settings_.skip_proven_separated && usable > 0.0) clearance_budget_[index] = travel + usable;
     return;
   }
