@@ -114,6 +114,22 @@ def convergence(out, speeds, seeds, scenario):
         runs = [r for r in (summary(out / f"v{v}_s{s}") for s in seeds) if r]
         lines.append(f"| {v} | {len(runs)} | " +
                      " | ".join(mean_sd([float(r[key]) for r in runs]) for key, _, _, _ in FIGURES) + " |")
+    lines += ["", "Finished runs, one line each (the plate work and the friction dissipation over the whole run):", "",
+              "| run | loaded thickness (µm) | released thickness (µm) | springback (%) | held pressure (MPa) | "
+              "unbalanced-force ratio loaded / released | plate work (pJ) | friction dissipation (pJ) | steps |",
+              "|---" * 9 + "|"]
+    for v in speeds:
+        for s in seeds:
+            r = summary(out / f"v{v}_s{s}")
+            if not r:
+                continue
+            end = last_row(out / f"v{v}_s{s}") or {}
+            lines.append(f"| v{v}_s{s} | {float(r['loaded_thickness_um']):.3f} | {float(r['final_thickness_um']):.3f} | "
+                         f"{float(r['springback_percent']):.3f} | {float(r['held_pressure_MPa']):.2f} | "
+                         f"{float(r['loaded_unbalanced_force_ratio']):.1e} / "
+                         f"{float(r['released_unbalanced_force_ratio']):.1e} | "
+                         f"{float(r.get('plate_work_pJ', 'nan')):.4g} | {float(end.get('friction_dissipation', 'nan')):.4g} | "
+                         f"{r['steps']} |")
     return "convergence.md", lines
 
 
