@@ -124,11 +124,13 @@ def convergence(out, speeds, seeds, scenario):
             if not r:
                 continue
             end = last_row(out / f"v{v}_s{s}") or {}
+            friction = f"{float(end['friction_dissipation']):.4g}" if "friction_dissipation" in end else "–"
+            plate = f"{float(r['plate_work_pJ']):.4g}" if "plate_work_pJ" in r else "–"
             lines.append(f"| v{v}_s{s} | {float(r['loaded_thickness_um']):.3f} | {float(r['final_thickness_um']):.3f} | "
                          f"{float(r['springback_percent']):.3f} | {float(r['held_pressure_MPa']):.2f} | "
                          f"{float(r['loaded_unbalanced_force_ratio']):.1e} / "
                          f"{float(r['released_unbalanced_force_ratio']):.1e} | "
-                         f"{float(r.get('plate_work_pJ', 'nan')):.4g} | {float(end.get('friction_dissipation', 'nan')):.4g} | "
+                         f"{plate} | {friction} | "
                          f"{r['steps']} |")
     return "convergence.md", lines
 

@@ -19,7 +19,8 @@ def write_run(out, speed, seed, thickness, springback, pressure, finished=True):
         f"finished = {'true' if finished else 'false'}\nloaded_thickness_um = {thickness}\n"
         f"springback_percent = {springback}\nheld_pressure_MPa = {pressure}\n"
         "loaded_unbalanced_force_ratio = 1e-4\nreleased_unbalanced_force_ratio = 2e-4\n"
-        "loaded_inertial_number = 0\nreleased_inertial_number = 0\n")
+        "loaded_inertial_number = 0\nreleased_inertial_number = 0\n"
+        f"final_thickness_um = {thickness * (1 + springback / 100)}\nsteps = 1000\nplate_work_pJ = 1e6\n")
 
 
 def test_verdict_uses_the_two_standard_error_band():
@@ -52,3 +53,4 @@ def test_convergence_table_pairs_seeds_and_skips_unfinished_runs(tmp_path):
     cells = [cell.strip() for cell in verdicts.split("|")[3:6]]
     assert cells[0].startswith("met") and cells[1].startswith("not met") and cells[2].startswith("met")
     assert "nan" not in text
+    assert sum(line.startswith("| v0.0") for line in lines) == 9  # every finished run listed once
