@@ -22,7 +22,7 @@ double log_uniform(Rng& rng, double low, double high) { return std::exp(uniform(
 // c ≤ b ≤ 2c (half of each exactly a = b, b = c); triaxial: a, b log-uniform in [c, a], c = a/k. Largest/smallest = k
 // (ordinary: ≤ 10).
 Eigen::Vector3d body_semi_axes(Rng& rng, BodyShape shape, double aspect, double mean_radius) {
-  Eigen::Vector3d ratios;
+  Eigen::Vector3d ratios = Eigen::Vector3d::Ones();  // every case sets it; the compiler cannot see that
   switch (shape) {
     case BodyShape::ordinary: return random_semi_axes(rng, mean_radius);
     case BodyShape::flat:  // half of them discs (a = b): a flat valley of g along the whole rim
@@ -197,7 +197,7 @@ std::string PropertyReport::text() const {
   std::snprintf(
       line, sizeof line,
       "narrow_phase_property: %ld pairs in %.1f s: %ld contact, %ld separated, %ld failed, %ld non-finite, "
-      "%ld unverified, %ld swap mismatches; mean Newton steps %.2f\n",
+      "%ld unverified, %ld swap mismatches; mean Newton steps %.2f; %ld at another common normal\n",
       pairs, seconds, all.contact, all.separated, all.failed, all.non_finite, all.unverified, all.swap_mismatch,
       all.pairs > 0 ? static_cast<double>(all.newton_steps) / static_cast<double>(all.pairs) : 0.0, all.other_minimum);
   out += line;
