@@ -227,7 +227,9 @@ void write_input(const std::string& path, const std::string& data_name, const sc
   }
   out << "variable     loaded equal " << target << '\n'
       << "fix          halt all halt 1 v_loaded > 0.5 error continue\n"
-      << "run          " << budget(travel / c.speed) << "\nunfix        halt\n\n";
+      << "run          " << budget(travel / c.speed) << "\nunfix        halt\n"
+      // The step that met the target falls between output rows in general: say it here.
+      << "print        \"ellc: load ended at $(v_plate_pressure:%.17g) MPa, thickness $(v_thickness:%.17g) um\"\n\n";
 
   // The engine's equilibrium criterion (LoadingProtocol::after_step): at least the stage's time,
   // then until the unbalanced-force ratio (f_wall[9], the engine's definition) is below

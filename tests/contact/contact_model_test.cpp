@@ -100,6 +100,42 @@ TEST(ContactModel, TangentialStiffnessIsMindlinOrTheRatioOfTheNormalOne) {
   EXPECT_NEAR(tangential_force(model), 0.8 * normal_stiffness, 1e-12 * normal_stiffness);
 }
 
+// Mindlin's spring in displacement form: at a fixed tangential displacement ξ the force is k_t ξ
+// with k_t of the contact's current size, so an overlap that shrinks and regrows returns the
+// force it started with, and the spring energy the cycle moved nets to zero. The Thornton–Yin rule
+// (force kept when k_t grows, ξ kept when it falls) fails this: it loses force at every cycle, and
+// a packing under load whose contacts vibrate then creeps with simulated time.
+TEST(ContactModel, TangentialForceFollowsTheContactSizeAndComesBackAfterAnOverlapCycle) {
+  const Material elastic{142000.0, 0.25, 1e30};  // never yields: Hertz's size on every step
+  const ContactConstants constants = constants_for(elastic, {0.2, 0.2}, {0.2, 0.2});
+  ContactModel model;
+  model.friction = 0.5;
+  model.normal_damping = model.tangential_damping = 0.0;
+  const InteractionContext context = make_interaction(model, elastic, elastic);
+  const double dt = 1e-4;
+  const auto step = [&](double overlap, double slide, ContactHistory& history) {
+    const ContactKinematics kinematics{Eigen::Vector3d::UnitX(), slide * Eigen::Vector3d::UnitY(), 2.0};
+    const LawOnBranch law = evaluate_contact_on_branch(constants, overlap, 0.0);
+    return contact_force(context, constants, law.law.force, law.branch, kinematics, dt, history);
+  };
+  ContactHistory history;
+  const double start_force = step(0.05, 0.01, history).on_j.y();  // ξ = 1e-6, stuck
+  const double spring = history.spring().y();
+  ASSERT_NEAR(spring, 1e-6, 1e-18);
+  double moved = 0.0;  // spring energy booked with friction over the cycle
+  constexpr int kSteps = 64;
+  for (int k = 1; k <= kSteps; ++k) {  // 0.05 → 0.03 → 0.07 → 0.05 µm, no tangential motion
+    const double overlap = 0.05 + 0.02 * std::sin(-2.0 * M_PI * k / kSteps);
+    const ContactForce force = step(overlap, 0.0, history);
+    moved += force.friction_dissipation;
+    EXPECT_EQ(history.spring().y(), spring) << "step " << k;  // ξ is kept,
+    EXPECT_NEAR(force.on_j.y(), -history.spring_stiffness * spring, 1e-12 * std::abs(start_force))
+        << "step " << k;  // and the force is that of the current stiffness
+  }
+  EXPECT_NEAR(step(0.05, 0.0, history).on_j.y(), start_force, 1e-12 * std::abs(start_force));
+  EXPECT_NEAR(moved, 0.0, 1e-12 * std::abs(start_force * spring));
+}
+
 TEST(ContactModel, HertzNormalModelNeverYields) {
   ContactModel model;
   model.normal = NormalModel::hertz;

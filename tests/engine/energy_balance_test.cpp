@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 
 #include "ellc/engine/time_step.hpp"
@@ -36,10 +37,11 @@ Balance balance_of(const Simulation& sim, double initial_kinetic) {
           sim.friction_dissipation()};
 }
 
-// 60 ellipsoids at rest between two walls; the top wall presses the bed into plastic contact,
-// then lifts off. Damped and frictional, so every term is exercised.
-TEST(EngineEnergyBalance, WallWorkEqualsStoredPlusDissipatedEnergy) {
-  ParticleSet particles = testing::colliding_packing(60, 7, 0.3, 0.0, 11);
+// 60 bodies at rest between two walls; the top wall presses the bed into plastic contact, then
+// lifts off. Damped and frictional, so every term is exercised. Returns the balance at the end of
+// the pressing and after the release.
+std::array<Balance, 2> press_and_release(bool spheres) {
+  ParticleSet particles = testing::colliding_packing(60, 7, 0.3, 0.0, 11, spheres);
   for (auto& v : particles.velocity) v.setZero();
   double top = 0.0;
   for (std::size_t k = 0; k < particles.size(); ++k)
@@ -57,26 +59,46 @@ TEST(EngineEnergyBalance, WallWorkEqualsStoredPlusDissipatedEnergy) {
   const double speed = 0.5;  // µm/µs
   sim.set_wall_velocity(kTopWall, -speed);
   while (sim.gap() > solid / 0.62) sim.step();
-  Balance loaded = balance_of(sim, initial_kinetic);
+  const Balance loaded = balance_of(sim, initial_kinetic);
   sim.set_wall_velocity(kTopWall, speed);
   for (int step = 0; step < 4000 && sim.wall_contact_count(kTopWall) > 0; ++step) sim.step();
   for (int step = 0; step < 2000; ++step) sim.step();
   const Balance released = balance_of(sim, initial_kinetic);
-
-  for (const Balance& b : {loaded, released}) {
-    EXPECT_GT(b.plate_work, 0.0);
-    EXPECT_GT(b.plastic, 0.01 * b.plate_work) << "the cycle must reach plastic contacts";
-    EXPECT_GT(b.damping, 0.0);
-    EXPECT_GT(b.friction, 0.0);
-    EXPECT_LT(std::abs(b.residual()), 0.01 * b.plate_work)
-        << "plate " << b.plate_work << " kinetic " << b.kinetic << " law " << b.law_elastic << " spring " << b.spring
-        << " plastic " << b.plastic << " damping " << b.damping << " friction " << b.friction;
-  }
   std::printf(
       "energy [pJ] at release: plate %.6g = kinetic %.4g + law %.4g + spring %.4g + plastic %.4g + damping "
       "%.4g + friction %.4g; residual %.3g (%.2g of the plate work)\n",
       released.plate_work, released.kinetic, released.law_elastic, released.spring, released.plastic, released.damping,
       released.friction, released.residual(), released.residual() / released.plate_work);
+  return {loaded, released};
+}
+
+void expect_balance(const std::array<Balance, 2>& states, double tolerance) {
+  for (const Balance& b : states) {
+    EXPECT_GT(b.plate_work, 0.0);
+    EXPECT_GT(b.plastic, 0.01 * b.plate_work) << "the cycle must reach plastic contacts";
+    EXPECT_GT(b.damping, 0.0);
+    EXPECT_GT(b.friction, 0.0);
+    EXPECT_LT(std::abs(b.residual()), tolerance * b.plate_work)
+        << "plate " << b.plate_work << " kinetic " << b.kinetic << " law " << b.law_elastic << " spring " << b.spring
+        << " plastic " << b.plastic << " damping " << b.damping << " friction " << b.friction;
+  }
+}
+
+// Spheres: the constants do not turn with the bodies, so the law's force derives from its stored
+// energy and what is left is the step's discretisation: −0.06 % loaded, −0.15 % released (and
+// −0.07 % at a quarter of the step). Leaving out the spring energy that a change of k_t moves
+// (contact_model.cpp) makes it −4 %.
+TEST(EngineEnergyBalance, WallWorkEqualsStoredPlusDissipatedEnergyOnSpheres) {
+  expect_balance(press_and_release(true), 0.003);
+}
+
+// Ellipsoids: contacts whose normal and curvatures turn during a step do work that the overlap
+// rate does not see, and the law's stored energy is a function of constants that change as the
+// bodies rotate (docs/engine.md, "Energy"). That floor does not shrink with the step: released
+// residuals of −1.1, −0.5 and −0.6 % at 1, 1/2 and 1/4 of this step, and −0.8, −1.1, −1.0 % with
+// the earlier tangential rule. Hence 2 % here; the calendering runs close to 1 % (scenario test).
+TEST(EngineEnergyBalance, WallWorkEqualsStoredPlusDissipatedEnergyOnEllipsoidsUpToTheirRotationFloor) {
+  expect_balance(press_and_release(false), 0.02);
 }
 
 }  // namespace

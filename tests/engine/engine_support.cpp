@@ -24,7 +24,7 @@ EngineSettings free_settings(NormalModel model) {
 }
 
 ParticleSet colliding_packing(std::size_t count, std::uint64_t seed, double insertion_fraction, double floor,
-                              std::uint64_t velocity_seed) {
+                              std::uint64_t velocity_seed, bool spheres) {
   PackingSpec spec;
   spec.count = count;
   spec.mean_radius = 4.0;
@@ -32,6 +32,7 @@ ParticleSet colliding_packing(std::size_t count, std::uint64_t seed, double inse
   spec.seed = seed;
   spec.density = kScaledDensity;
   spec.insertion_fraction = insertion_fraction;
+  spec.spheres = spheres;
   ParticleSet particles = generate_packing(spec, kCollidingBox, floor, ellipsoid_overlap_test());
   Random random(velocity_seed);
   for (auto& velocity : particles.velocity)

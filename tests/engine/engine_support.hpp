@@ -20,6 +20,6 @@ inline constexpr double kScaledDensity = 4.7e-3 * 1000.0;  // ng/µm³
 // (Test data from the scenario layer's packing generator and its Random.)
 inline constexpr Box kCollidingBox{42.0, 42.0};
 [[nodiscard]] ParticleSet colliding_packing(std::size_t count, std::uint64_t seed, double insertion_fraction,
-                                            double floor, std::uint64_t velocity_seed);
+                                            double floor, std::uint64_t velocity_seed, bool spheres = false);
 
 }  // namespace ellc::engine::testing
