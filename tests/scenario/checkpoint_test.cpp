@@ -137,6 +137,7 @@ TEST(Checkpoint, SizeFieldIsCheckedBeforeAllocating) {
   const std::string message =
       written.error_reading(edited(written.bytes, count_and_key, bytes_of(std::uint64_t{1} << 40)));
   EXPECT_NE(message.find("an array of 1099511627776 elements"), std::string::npos) << message;
+  EXPECT_NE(message.find("bytes are left"), std::string::npos) << message;  // checked against the rest
 }
 
 TEST(Checkpoint, ImpossibleContentIsRefusedWithTheReason) {

@@ -5,8 +5,9 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
-#include <sstream>
 #include <stdexcept>
+#include <streambuf>
+#include <vector>
 
 #include "ellc/engine/binary_io.hpp"
 #include "ellc/io/input_error.hpp"
@@ -180,7 +181,11 @@ std::uint64_t scenario_hash(const std::string& text) noexcept {
   return hash;
 }
 
-std::uint32_t crc32(std::string_view bytes) noexcept {
+namespace {
+
+// CRC-32 carried over consecutive pieces: crc32(a + b) = finish(extend(extend(start, a), b)).
+constexpr std::uint32_t kCrcStart = 0xFFFFFFFFU;
+std::uint32_t crc32_extend(std::uint32_t crc, std::string_view bytes) noexcept {
   static const std::array<std::uint32_t, 256> table = [] {
     std::array<std::uint32_t, 256> entries{};
     for (std::uint32_t n = 0; n < 256; ++n) {
@@ -190,30 +195,95 @@ std::uint32_t crc32(std::string_view bytes) noexcept {
     }
     return entries;
   }();
-  std::uint32_t crc = 0xFFFFFFFFU;
   for (const unsigned char byte : bytes) crc = table[(crc ^ byte) & 0xFFU] ^ (crc >> 8);
-  return crc ^ 0xFFFFFFFFU;
+  return crc;
 }
+
+// The payload goes to the file as it is produced, through a 1 MiB buffer that also feeds its
+// CRC: the checkpoint of a 10^5-particle run (350 MB) is no longer held in memory beside the
+// state it copies.
+class ChecksummedWriter final : public std::streambuf {
+ public:
+  explicit ChecksummedWriter(std::streambuf& file) : file_(file), buffer_(1 << 20) {
+    setp(buffer_.data(), buffer_.data() + buffer_.size());
+  }
+  [[nodiscard]] std::uint64_t size() const noexcept { return written_; }
+  [[nodiscard]] std::uint32_t crc() const noexcept { return crc_ ^ 0xFFFFFFFFU; }
+
+ protected:
+  int_type overflow(int_type byte) override {
+    if (!drain()) return traits_type::eof();
+    if (!traits_type::eq_int_type(byte, traits_type::eof())) {
+      *pptr() = traits_type::to_char_type(byte);
+      pbump(1);
+    }
+    return traits_type::not_eof(byte);
+  }
+  int sync() override { return drain() ? 0 : -1; }
+
+ private:
+  bool drain() {
+    const auto count = static_cast<std::size_t>(pptr() - pbase());
+    crc_ = crc32_extend(crc_, std::string_view(pbase(), count));
+    written_ += count;
+    setp(buffer_.data(), buffer_.data() + buffer_.size());
+    return file_.sputn(buffer_.data(), static_cast<std::streamsize>(count)) == static_cast<std::streamsize>(count);
+  }
+  std::streambuf& file_;
+  std::vector<char> buffer_;
+  std::uint32_t crc_ = kCrcStart;
+  std::uint64_t written_ = 0;
+};
+
+// Reads the bytes in place (an istringstream would copy the payload once more). Seekable, so
+// that binary::remaining_bytes can check an array's size field against what is left.
+class ViewReader final : public std::streambuf {
+ public:
+  explicit ViewReader(std::string_view bytes) {
+    char* begin = const_cast<char*>(bytes.data());  // never written: a get area only
+    setg(begin, begin, begin + bytes.size());
+  }
+
+ protected:
+  pos_type seekoff(off_type offset, std::ios_base::seekdir from, std::ios_base::openmode which) override {
+    const off_type size = egptr() - eback();
+    const off_type origin = from == std::ios_base::beg ? 0 : from == std::ios_base::cur ? gptr() - eback() : size;
+    const off_type target = origin + offset;
+    if ((which & std::ios_base::in) == 0 || target < 0 || target > size) return pos_type(off_type(-1));
+    setg(eback(), eback() + target, egptr());
+    return pos_type(target);
+  }
+  pos_type seekpos(pos_type position, std::ios_base::openmode which) override {
+    return seekoff(off_type(position), std::ios_base::beg, which);
+  }
+};
+
+}  // namespace
+
+std::uint32_t crc32(std::string_view bytes) noexcept { return crc32_extend(kCrcStart, bytes) ^ 0xFFFFFFFFU; }
 
 void write_checkpoint(const std::string& path, const Scenario& scenario, const ProtocolState& protocol,
                       double dt_estimate, const Simulation& simulation, const RunRecord& record) {
-  std::ostringstream payload_stream(std::ios::binary);
-  binary::put(payload_stream, scenario_hash(scenario.text));
-  protocol_fields([&payload_stream](const auto& value) { binary::put(payload_stream, value); }, protocol);
-  binary::put(payload_stream, dt_estimate);
-  simulation.write_state(payload_stream);
-  binary::put(payload_stream, kRecordTag);
-  record_fields([&payload_stream](const auto& value) { binary::put(payload_stream, value); }, record);
-  const std::string payload = std::move(payload_stream).str();
-  Header header;
-  header.payload_size = payload.size();
-  header.payload_crc = crc32(payload);
-
   const std::string temporary = path + ".tmp";
   {
     std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
     if (!out) throw std::runtime_error("cannot open " + temporary + " for writing");
-    out << encode_header(header) << payload;
+    Header header;
+    out << encode_header(header);  // its size and CRC are known only once the payload is written
+    ChecksummedWriter payload(*out.rdbuf());
+    std::ostream payload_stream(&payload);
+    binary::put(payload_stream, scenario_hash(scenario.text));
+    protocol_fields([&payload_stream](const auto& value) { binary::put(payload_stream, value); }, protocol);
+    binary::put(payload_stream, dt_estimate);
+    simulation.write_state(payload_stream);
+    binary::put(payload_stream, kRecordTag);
+    record_fields([&payload_stream](const auto& value) { binary::put(payload_stream, value); }, record);
+    payload_stream.flush();
+    if (!payload_stream) throw std::runtime_error("writing " + temporary + " failed");
+    header.payload_size = payload.size();
+    header.payload_crc = payload.crc();
+    out.seekp(0);
+    out << encode_header(header);
     out.flush();
     if (!out) throw std::runtime_error("writing " + temporary + " failed");
   }
@@ -223,7 +293,8 @@ void write_checkpoint(const std::string& path, const Scenario& scenario, const P
 Checkpoint parse_checkpoint(std::string_view bytes, const std::string& source, const Scenario& scenario,
                             EngineSettings settings) {
   const std::string_view payload = checked_payload(bytes, source);
-  std::istringstream in(std::string(payload), std::ios::binary);
+  ViewReader payload_reader(payload);
+  std::istream in(&payload_reader);
   std::uint64_t hash = 0;
   Checkpoint checkpoint;
   try {
