@@ -238,8 +238,9 @@ TEST(Law, KeptAndCachedUnloadingCurvesGiveTheSameBits) {
 }
 
 // evaluate_contact_on_branch gives the law's bits and the elastic curve F = C x^{3/2} the force was
-// on: Hertz (C, δ, 1) while loading or never yielded, the unloading curve of eq. (49) below δ_*
-// (C_UL, δ − δ_p, R_e,pmax/R_e > 1), so the contact model need not derive that curve again.
+// on: Hertz (C, δ, 1) until the contact yields, the unloading curve of eq. (49) below δ_* (C_UL,
+// δ − δ_p, R_e,pmax/R_e > 1) and at its top while a yielded contact loads, so the contact model
+// need not derive that curve again.
 TEST(Law, TheBranchIsTheElasticCurveTheForceWasOn) {
   std::mt19937_64 rng(12);
   std::uniform_real_distribution<double> aspect(0.3, 3.0), radius(0.5, 20.0), factor(-1.0, 14.0);
@@ -257,8 +258,12 @@ TEST(Law, TheBranchIsTheElasticCurveTheForceWasOn) {
       ASSERT_EQ(on_branch.law.max_overlap, plain.max_overlap);
       ASSERT_EQ(on_branch.law.regime, plain.regime);
       const ElasticBranch& branch = on_branch.branch;
-      if (overlap > 0.0 && overlap < max_overlap && max_overlap > c.yield_overlap) {
-        const UnloadingBranch unloading = unloading_branch(c, max_overlap);
+      // Below δ_* a yielded contact is on its unloading curve; loading beyond δ_Y, at the top of
+      // the curve of its new δ_* (continuous stiffness where it turns); otherwise on Hertz's.
+      const bool unloads = overlap > 0.0 && overlap < max_overlap && max_overlap > c.yield_overlap;
+      const bool loads_yielded = overlap >= max_overlap && overlap > c.yield_overlap;
+      if (unloads || loads_yielded) {
+        const UnloadingBranch unloading = unloading_branch(c, unloads ? max_overlap : overlap);
         EXPECT_EQ(branch.coefficient, unloading.unloading_coefficient);
         EXPECT_EQ(branch.elastic_overlap, overlap - unloading.plastic_overlap);
         EXPECT_EQ(branch.radius_scale, unloading.unloading_radius / c.equivalent_radius);

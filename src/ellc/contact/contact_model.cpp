@@ -162,15 +162,16 @@ ContactForce contact_force(const InteractionContext& context, const ContactConst
   }
   const TangentialCoefficients tangential{
       k_t, viscous_damping(model.tangential_damping, kinematics.effective_mass, k_t), model.friction};
-  // Mindlin's spring in displacement form: ξ is kept when k_t changes, so F_t = −k_t ξ follows the
-  // contact's size both ways and an overlap that oscillates at fixed ξ returns to its force. The
-  // Thornton–Yin rule (force kept when k_t grows, ξ kept when it falls) lost force at every such
-  // cycle: the packing's tangential forces then crept with simulated time under load (docs/engine.md,
-  // "Convergence study"). What the change of k_t moves in or out of the spring, ½ (k_old − k_t)|ξ|²,
-  // is booked with friction: it is lost where the contact shrinks and returned where it regrows.
+  // Incremental spring (Thornton and Yin): a stiffer contact keeps the spring's force (ξ scaled by
+  // k_old/k_t), a softer one keeps ξ so the force shrinks with the contact. Either way the spring
+  // gives up energy, never gains it; what it gives up is booked with friction. The loss of an
+  // overlap cycle is of the order of k_t's change over it; it stays small because k_t is continuous
+  // where the contact turns from loading to unloading (law/contact_law.hpp, top_of_unloading_branch).
   const double k_old = history.spring_stiffness;
-  const Eigen::Vector3d spring = carry_to_tangent_plane(history.spring(), n);  // its length kept: no work
-  const double released = k_old > 0.0 ? 0.5 * (k_old - k_t) * spring.squaredNorm() : 0.0;
+  Eigen::Vector3d spring = carry_to_tangent_plane(history.spring(), n);  // its length kept: no work
+  const double energy_before = 0.5 * (k_old > 0.0 ? k_old : k_t) * spring.squaredNorm();
+  if (k_old > 0.0 && k_t > k_old) spring *= k_old / k_t;
+  const double released = energy_before - 0.5 * k_t * spring.squaredNorm();
   const TangentialResponse friction =
       tangential_response(spring, n, kinematics.relative_velocity, dt, normal_force, tangential);
   history.spring() = friction.spring;

@@ -10,13 +10,12 @@
 //  damping     contact_radius  c = 2 ζ sqrt(m* k), k_n = 2 E_e c: the Hertz tangent stiffness
 //                              written with the contact radius c of eq. (9) on the current branch
 //              hertz_tangent   the same with k_n = 3/2 C x^{1/2}, the tangent of the branch F = C x^{3/2}
-//  Branch (law/contact_law.hpp, ElasticBranch): Hertz while loading, the unloading curve (eq. 49)
-//  with R_e,pmax and x = δ − δ_p below δ_*.
+//  Branch (law/contact_law.hpp, ElasticBranch): Hertz until the contact yields; then the unloading
+//  curve (eq. 49) with R_e,pmax and x = δ − δ_p, below δ_* and, at its top, while loading.
 //  tangential  mindlin         k_t = 8 G_e c_c,  G_e = [ (2 − ν_I)/G_I + (2 − ν_J)/G_J ]⁻¹
 //              ratio           k_t = κ k_n, k_n of the damping sub-model
 // Then F_n = max(0, F_law − c_n v_n) and the Coulomb-limited spring (tangential_spring.hpp), with
-// c_t = 2 ζ_t sqrt(m* k_t). The spring's displacement ξ is kept when k_t changes (Mindlin's spring
-// in displacement form), so F_t = −k_t ξ follows the contact's size.
+// c_t = 2 ζ_t sqrt(m* k_t), updated incrementally: when k_t grows the spring keeps its force.
 
 #include <Eigen/Core>
 
@@ -95,9 +94,7 @@ struct ContactForce {
   double damping_dissipation =
       0.0;  // normal dashpot −(F_n − F_law) v_n dt ≥ 0, tangential c_t |v_t|² dt while sticking
   double friction_dissipation =
-      0.0;  // tangential work not kept by the spring (sliding): −F_t·v_t dt − ΔE_spring − the above;
-            // ΔE_spring includes ½ Δk_t |ξ|² from a change of stiffness, so this is negative on a
-            // step where a stuck contact stiffens
+      0.0;  // tangential work not kept by the spring (sliding): −F_t·v_t dt − ΔE_spring − the above
   double normal_stiffness = 0.0;  // k_n of the damping sub-model on the current branch: a plate
                                   // servo's loop gain (engine/servo.hpp) sums it over the plate
 };

@@ -167,16 +167,19 @@ struct UnloadingCurveAndRadius : UnloadingCurve {
 }
 
 // The law and its branch, with the unloading curve of δ_* from `curve_of()`, called only when
-// unloading from δ_* > δ_Y. Every evaluate_contact* below is this one function: the same bits
-// either way (a caller that reads only the LawResult lets the compiler drop the branch).
-template <class CurveOf>
+// unloading from δ_* > δ_Y, and the branch of a yielded contact that loads from
+// `yielded_loading_branch(overlap)`. Every evaluate_contact* below is this one function: the same
+// bits either way (a caller that reads only the LawResult passes `hertz_branch` and lets the
+// compiler drop the branch).
+template <class CurveOf, class YieldedLoadingBranch>
 [[nodiscard]] inline LawOnBranch evaluate_contact_given(const ContactConstants& c, double overlap, double max_overlap,
-                                                        CurveOf&& curve_of) noexcept {
+                                                        CurveOf&& curve_of,
+                                                        YieldedLoadingBranch&& yielded_loading_branch) noexcept {
   const ElasticBranch hertz{c.hertz_coefficient, overlap, 1.0};
   if (!(overlap > 0.0)) return {{0.0, max_overlap, Regime::separated}, hertz};
   if (overlap >= max_overlap) {
     const LoadingPoint point = loading_force(c, overlap);
-    return {{point.force, overlap, point.regime}, hertz};
+    return {{point.force, overlap, point.regime}, overlap > c.yield_overlap ? yielded_loading_branch(overlap) : hertz};
   }
   if (max_overlap <= c.yield_overlap)  // never yielded: Hertz both ways, δ_p = 0
     return {{c.hertz_coefficient * pow_three_halves(overlap), max_overlap, Regime::elastic}, hertz};
@@ -186,28 +189,44 @@ template <class CurveOf>
   if (elastic_overlap <= 0.0) return {{0.0, max_overlap, Regime::separated}, unloading};
   return {{curve.coefficient * pow_three_halves(elastic_overlap), max_overlap, Regime::unloading}, unloading};
 }
+// For callers that read only the LawResult.
+[[nodiscard]] inline ElasticBranch hertz_branch(double) noexcept { return {}; }
+
+// The branch of a yielded contact that loads (δ = δ_*): the unloading curve of eq. (49) at its
+// own top, x = δ − δ_p with R_e,pmax. Its contact radius c² = R_e,pmax (δ − δ_p) f1²/f2 =
+// β² R_e δ f1²/f2 is the patch the law's force implies, and the radius the contact has the moment
+// it turns to unload. The Hertz radius instead (β = 1) made k_n and k_t jump by β at every turn
+// at δ_*, and the tangential spring lost that jump's share of its force at each reloading
+// (docs/contact_model.md, "The branch").
+[[nodiscard]] inline ElasticBranch top_of_unloading_branch(const ContactConstants& c, double overlap) noexcept {
+  const UnloadingCurveAndRadius curve = unloading_curve_and_radius(c, overlap);
+  return {curve.coefficient, overlap - curve.plastic_overlap, curve.radius_scale};
+}
 }  // namespace law_detail
 
 // The law. `max_overlap` is δ_* before this step (0 for a fresh contact). The caller stores the
 // returned max_overlap; deleting history on separation is the caller's policy (docs/model.md §5).
 [[nodiscard]] inline LawResult evaluate_contact(const ContactConstants& c, double overlap,
                                                 double max_overlap) noexcept {
-  return law_detail::evaluate_contact_given(c, overlap, max_overlap, [&] { return unloading_curve(c, max_overlap); })
+  return law_detail::evaluate_contact_given(c, overlap, max_overlap, [&] { return unloading_curve(c, max_overlap); },
+                                            law_detail::hertz_branch)
       .law;
 }
 
 // The law and the elastic branch the contact is on after it (the same bits as evaluate_contact).
 [[nodiscard]] inline LawOnBranch evaluate_contact_on_branch(const ContactConstants& c, double overlap,
                                                             double max_overlap) noexcept {
-  return law_detail::evaluate_contact_given(c, overlap, max_overlap,
-                                            [&] { return law_detail::unloading_curve_and_radius(c, max_overlap); });
+  return law_detail::evaluate_contact_given(
+      c, overlap, max_overlap, [&] { return law_detail::unloading_curve_and_radius(c, max_overlap); },
+      [&](double top) { return law_detail::top_of_unloading_branch(c, top); });
 }
 
 // The law with the unloading curve kept by the caller (the same bits as evaluate_contact):
 // `curve` must be unloading_curve(c, max_overlap) whenever max_overlap > δ_Y (not read otherwise).
 [[nodiscard]] inline LawResult evaluate_contact_on_curve(const ContactConstants& c, double overlap, double max_overlap,
                                                          const UnloadingCurve& curve) noexcept {
-  return law_detail::evaluate_contact_given(c, overlap, max_overlap, [&] { return curve; }).law;
+  return law_detail::evaluate_contact_given(c, overlap, max_overlap, [&] { return curve; }, law_detail::hertz_branch)
+      .law;
 }
 
 // The unloading curve of the last δ_* asked for, for one set of constants: derived again only when
@@ -231,7 +250,9 @@ class UnloadingCurveCache {
 // evaluate_contact(c, overlap, max_overlap).
 [[nodiscard]] inline LawResult evaluate_contact_cached(const ContactConstants& c, double overlap, double max_overlap,
                                                        UnloadingCurveCache& cache) noexcept {
-  return law_detail::evaluate_contact_given(c, overlap, max_overlap, [&] { return cache.curve(c, max_overlap); }).law;
+  return law_detail::evaluate_contact_given(c, overlap, max_overlap, [&] { return cache.curve(c, max_overlap); },
+                                            law_detail::hertz_branch)
+      .law;
 }
 
 }  // namespace ellc
