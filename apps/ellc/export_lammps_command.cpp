@@ -227,7 +227,8 @@ void write_input(const std::string& path, const std::string& data_name, const sc
   }
   out << "variable     loaded equal " << target << '\n'
       << "fix          halt all halt 1 v_loaded > 0.5 error continue\n"
-      << "run          " << budget(travel / c.speed) << "\nunfix        halt\n"
+      << "run          " << budget(travel / c.speed)
+      << "\nunfix        halt\n"
       // The step that met the target falls between output rows in general: say it here.
       << "print        \"ellc: load ended at $(v_plate_pressure:%.17g) MPa, thickness $(v_thickness:%.17g) um\"\n\n";
 

@@ -4,6 +4,7 @@
 
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <fstream>
 #include <iterator>
 #include <string>
@@ -14,6 +15,9 @@ namespace ellc::cli {
 void prefer_short_spinning() {
 #if defined(__linux__) && defined(_OPENMP)
   if (std::getenv("OMP_WAIT_POLICY") != nullptr || std::getenv("GOMP_SPINCOUNT") != nullptr) return;
+  // Under valgrind /proc/self/exe is valgrind's tool, which refuses to be started directly: the
+  // re-executed run would end at once ("You cannot run ... directly"). Run as we are instead.
+  if (const char* preload = std::getenv("LD_PRELOAD"); preload != nullptr && std::strstr(preload, "vgpreload")) return;
   std::ifstream cmdline("/proc/self/cmdline", std::ios::binary);
   std::string text((std::istreambuf_iterator<char>(cmdline)), std::istreambuf_iterator<char>());
   std::vector<std::string> words;

@@ -131,7 +131,7 @@ TEST(ContactModel, AYieldedContactTurningAtItsLargestOverlapKeepsItsTangentialFo
     return contact_force(context, constants, law.law.force, law.branch, kinematics, 1e-4, history).on_j.y();
   };
   for (int k = 1; k <= 100; ++k) (void)step(0.01 * k * top, 0.0);  // load to δ_* = top
-  const double start = step(top, 0.01);                          // ξ = 1e-6: stuck
+  const double start = step(top, 0.01);                            // ξ = 1e-6: stuck
   ASSERT_LT(std::abs(start), 0.1 * model.friction * loading.law.force);
   double force = start;
   for (int turn = 0; turn < 100; ++turn) {  // unload by 1e-6 of δ_* and reload, at rest

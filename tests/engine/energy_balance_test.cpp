@@ -95,7 +95,8 @@ TEST(EngineEnergyBalance, WallWorkEqualsStoredPlusDissipatedEnergyOnSpheresToFir
   const std::array<Balance, 2> fine = press_and_release(true, 0.0625);
   expect_balance(fine, 0.001);
   for (std::size_t k = 0; k < 2; ++k)
-    EXPECT_LT(std::abs(fine[k].residual() / fine[k].plate_work), 0.6 * std::abs(coarse[k].residual() / coarse[k].plate_work))
+    EXPECT_LT(std::abs(fine[k].residual() / fine[k].plate_work),
+              0.6 * std::abs(coarse[k].residual() / coarse[k].plate_work))
         << (k == 0 ? "loaded" : "released") << ": half the step should halve the residual";
 }
 

@@ -153,7 +153,7 @@ ContactForce contact_force(const InteractionContext& context, const ContactConst
   result.normal_stiffness = branch.normal;
   result.damping_dissipation = (law_force - normal_force) * normal_speed * dt;
   const double k_t = tangential_stiffness(context, branch);
-  if (!(k_t > 0.0) || !(model.friction > 0.0)) {  // no spring: c_t is not needed
+  if (!(k_t > 0.0) || !(model.friction > 0.0)) {            // no spring: c_t is not needed
     result.friction_dissipation = history.spring_energy();  // what a spring of the last step still held
     history.spring() = Eigen::Vector3d::Zero();
     history.spring_stiffness = k_t;

@@ -208,8 +208,8 @@ template <class CurveOf, class YieldedLoadingBranch>
 // returned max_overlap; deleting history on separation is the caller's policy (docs/model.md §5).
 [[nodiscard]] inline LawResult evaluate_contact(const ContactConstants& c, double overlap,
                                                 double max_overlap) noexcept {
-  return law_detail::evaluate_contact_given(c, overlap, max_overlap, [&] { return unloading_curve(c, max_overlap); },
-                                            law_detail::hertz_branch)
+  return law_detail::evaluate_contact_given(
+             c, overlap, max_overlap, [&] { return unloading_curve(c, max_overlap); }, law_detail::hertz_branch)
       .law;
 }
 
@@ -225,7 +225,8 @@ template <class CurveOf, class YieldedLoadingBranch>
 // `curve` must be unloading_curve(c, max_overlap) whenever max_overlap > δ_Y (not read otherwise).
 [[nodiscard]] inline LawResult evaluate_contact_on_curve(const ContactConstants& c, double overlap, double max_overlap,
                                                          const UnloadingCurve& curve) noexcept {
-  return law_detail::evaluate_contact_given(c, overlap, max_overlap, [&] { return curve; }, law_detail::hertz_branch)
+  return law_detail::evaluate_contact_given(
+             c, overlap, max_overlap, [&] { return curve; }, law_detail::hertz_branch)
       .law;
 }
 
@@ -250,8 +251,8 @@ class UnloadingCurveCache {
 // evaluate_contact(c, overlap, max_overlap).
 [[nodiscard]] inline LawResult evaluate_contact_cached(const ContactConstants& c, double overlap, double max_overlap,
                                                        UnloadingCurveCache& cache) noexcept {
-  return law_detail::evaluate_contact_given(c, overlap, max_overlap, [&] { return cache.curve(c, max_overlap); },
-                                            law_detail::hertz_branch)
+  return law_detail::evaluate_contact_given(
+             c, overlap, max_overlap, [&] { return cache.curve(c, max_overlap); }, law_detail::hertz_branch)
       .law;
 }
 
