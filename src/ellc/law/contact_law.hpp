@@ -169,7 +169,7 @@ struct UnloadingCurveAndRadius : UnloadingCurve {
 // The law and its branch, with the unloading curve of δ_* from `curve_of()`, called only when
 // unloading from δ_* > δ_Y, and the branch of a yielded contact that loads from
 // `yielded_loading_branch(overlap)`. Every evaluate_contact* below is this one function: the same
-// bits either way (a caller that reads only the LawResult passes `hertz_branch` and lets the
+// bits either way (a caller that reads only the LawResult passes `no_branch` and lets the
 // compiler drop the branch).
 template <class CurveOf, class YieldedLoadingBranch>
 [[nodiscard]] inline LawOnBranch evaluate_contact_given(const ContactConstants& c, double overlap, double max_overlap,
@@ -189,8 +189,8 @@ template <class CurveOf, class YieldedLoadingBranch>
   if (elastic_overlap <= 0.0) return {{0.0, max_overlap, Regime::separated}, unloading};
   return {{curve.coefficient * pow_three_halves(elastic_overlap), max_overlap, Regime::unloading}, unloading};
 }
-// For callers that read only the LawResult.
-[[nodiscard]] inline ElasticBranch hertz_branch(double) noexcept { return {}; }
+// For callers that read only the LawResult: no branch is derived.
+[[nodiscard]] inline ElasticBranch no_branch(double) noexcept { return {}; }
 
 // The branch of a yielded contact that loads (δ = δ_*): the unloading curve of eq. (49) at its
 // own top, x = δ − δ_p with R_e,pmax. Its contact radius c² = R_e,pmax (δ − δ_p) f1²/f2 =
@@ -209,7 +209,7 @@ template <class CurveOf, class YieldedLoadingBranch>
 [[nodiscard]] inline LawResult evaluate_contact(const ContactConstants& c, double overlap,
                                                 double max_overlap) noexcept {
   return law_detail::evaluate_contact_given(
-             c, overlap, max_overlap, [&] { return unloading_curve(c, max_overlap); }, law_detail::hertz_branch)
+             c, overlap, max_overlap, [&] { return unloading_curve(c, max_overlap); }, law_detail::no_branch)
       .law;
 }
 
@@ -226,7 +226,7 @@ template <class CurveOf, class YieldedLoadingBranch>
 [[nodiscard]] inline LawResult evaluate_contact_on_curve(const ContactConstants& c, double overlap, double max_overlap,
                                                          const UnloadingCurve& curve) noexcept {
   return law_detail::evaluate_contact_given(
-             c, overlap, max_overlap, [&] { return curve; }, law_detail::hertz_branch)
+             c, overlap, max_overlap, [&] { return curve; }, law_detail::no_branch)
       .law;
 }
 
@@ -252,7 +252,7 @@ class UnloadingCurveCache {
 [[nodiscard]] inline LawResult evaluate_contact_cached(const ContactConstants& c, double overlap, double max_overlap,
                                                        UnloadingCurveCache& cache) noexcept {
   return law_detail::evaluate_contact_given(
-             c, overlap, max_overlap, [&] { return cache.curve(c, max_overlap); }, law_detail::hertz_branch)
+             c, overlap, max_overlap, [&] { return cache.curve(c, max_overlap); }, law_detail::no_branch)
       .law;
 }
 
