@@ -76,10 +76,12 @@ def main() -> int:
                 fits[f"{label}: ours, o and t fitted"] = cal.constants_fit(sel)
             fits[f"{label}: ours, o and t kept at the paper's"] = cal.constants_fit(sel, paper_rates=True)
         ours = cal.recommended_constants(rows)
-        cxx = ellc_fit([r["run"] for r in rows])
+        # All cases at once, for comparison: its own n leaves g03_oblate at 11.6 % RMS, above the
+        # 10 % that `ellc fit` accepts by default, so the report asks for the model anyway.
+        cxx = ellc_fit([r["run"] for r in rows], ("--accept-poor-fit",))
         if cxx:
-            fits[f"`ellc fit` (C++), all {len(rows)} cases, its own n"] = {**cxx, "lam_rms": float("nan"),
-                                                                              "eps_rms": float("nan")}
+            label = f"`ellc fit --accept-poor-fit` (C++), all {len(rows)} cases, its own n"
+            fits[label] = {**cxx, "lam_rms": float("nan"), "eps_rms": float("nan")}
         n_best, _ = cal.common_n(rows)
         effect = cal.force_effect(rows, ours)
         cal.plot_lambda_profiles(rows)
