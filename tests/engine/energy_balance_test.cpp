@@ -103,10 +103,10 @@ TEST(EngineEnergyBalance, WallWorkEqualsStoredPlusDissipatedEnergyOnSpheresToFir
 // Ellipsoids: contacts whose normal and curvatures turn during a step do work that the overlap
 // rate does not see, and the law's stored energy is a function of constants that change as the
 // bodies rotate (docs/engine.md, "Energies"). That floor does not shrink with the step: released
-// residuals of −0.75, −1.07 and −1.03 % at 1, ½ and ¼ of this step. Hence 2 % here; the slower
-// calendering runs close to 1 % (ScenarioEnergyBalance).
+// residuals of −0.75, −1.07 and −1.03 % at 1, ½ and ¼ of this step, so the 1 % asserted here holds
+// at this step only, with little room.
 TEST(EngineEnergyBalance, WallWorkEqualsStoredPlusDissipatedEnergyOnEllipsoidsUpToTheirRotationFloor) {
-  expect_balance(press_and_release(false), 0.02);
+  expect_balance(press_and_release(false), 0.01);
 }
 
 }  // namespace
