@@ -93,10 +93,12 @@ struct LoadingPoint {
           Regime::fully_plastic};
 }
 
-// Unloading branch from history δ_* (> δ_Y). Everything is derived from δ_*, nothing cached.
-[[nodiscard]] inline UnloadingBranch unloading_branch(const ContactConstants& c, double max_overlap) noexcept {
+// Unloading branch from history δ_* (> δ_Y), given F_*,pmax = loading_force(c, δ_*).force by a
+// caller that has just computed it (the law at δ = δ_*).
+[[nodiscard]] inline UnloadingBranch unloading_branch_given(const ContactConstants& c, double max_overlap,
+                                                            double loading_force_at_max) noexcept {
   UnloadingBranch branch;
-  branch.loading_force = loading_force(c, max_overlap).force;
+  branch.loading_force = loading_force_at_max;
   branch.fully_plastic_force =
       law_detail::truncated_hertz_force(c, c.yield_pressure, c.contact_radius_sq_per_overlap * max_overlap);
   branch.hertz_force = c.hertz_coefficient * law_detail::pow_three_halves(max_overlap);
@@ -107,6 +109,11 @@ struct LoadingPoint {
   branch.unloading_radius = branch.force_ratio * branch.force_ratio * branch.plastic_radius;
   branch.unloading_coefficient = c.hertz_coefficient * std::sqrt(branch.unloading_radius / c.equivalent_radius);
   return branch;
+}
+
+// Unloading branch from history δ_* (> δ_Y). Everything is derived from δ_*, nothing cached.
+[[nodiscard]] inline UnloadingBranch unloading_branch(const ContactConstants& c, double max_overlap) noexcept {
+  return unloading_branch_given(c, max_overlap, loading_force(c, max_overlap).force);
 }
 
 // δ_p for any history δ_*: the permanent overlap of eq. (34), 0 when the contact never yielded.
@@ -129,13 +136,14 @@ struct UnloadingCurve {
 }
 
 // The elastic curve F = coefficient · x^{3/2} the contact is on after a step, x = δ − offset: Hertz
-// (eq. 10) while loading or if the contact never yielded, the unloading curve (eq. 49) below δ_*.
-// Its contact radius follows eq. (9) with the branch's radius, c² = (c_c²/δ) · radius_scale · x,
-// radius_scale = R_e,pmax/R_e on unloading and 1 otherwise. Stiffnesses that scale with the
-// contact size (damping, tangential spring) use this radius, so they follow the branch.
+// (eq. 10) if the contact never yielded, else the unloading curve (eq. 49) of δ_*, below δ_* and,
+// at its top, while the contact loads. Its contact radius follows eq. (9) with the branch's radius,
+// c² = (c_c²/δ) · radius_scale · x, radius_scale = R_e,pmax/R_e once yielded and 1 before.
+// Stiffnesses that scale with the contact size (damping, tangential spring) use this radius, so
+// they follow the branch.
 struct ElasticBranch {
   double coefficient = 0.0;      // C or C_UL
-  double elastic_overlap = 0.0;  // x = δ, or δ − δ_p on unloading (≤ 0 when the law is separated)
+  double elastic_overlap = 0.0;  // x = δ, or δ − δ_p once yielded (≤ 0 when the law is separated)
   double radius_scale = 1.0;     // R/R_e
 };
 
@@ -154,10 +162,13 @@ namespace law_detail {
 struct UnloadingCurveAndRadius : UnloadingCurve {
   double radius_scale = 1.0;
 };
+[[nodiscard]] inline UnloadingCurveAndRadius curve_and_radius_of(const UnloadingBranch& branch,
+                                                                 const ContactConstants& c) noexcept {
+  return {{branch.plastic_overlap, branch.unloading_coefficient}, branch.unloading_radius / c.equivalent_radius};
+}
 [[nodiscard]] inline UnloadingCurveAndRadius unloading_curve_and_radius(const ContactConstants& c,
                                                                         double max_overlap) noexcept {
-  const UnloadingBranch branch = unloading_branch(c, max_overlap);
-  return {{branch.plastic_overlap, branch.unloading_coefficient}, branch.unloading_radius / c.equivalent_radius};
+  return curve_and_radius_of(unloading_branch(c, max_overlap), c);
 }
 [[nodiscard]] inline double radius_scale_of(const UnloadingCurveAndRadius& curve) noexcept {
   return curve.radius_scale;
@@ -168,9 +179,9 @@ struct UnloadingCurveAndRadius : UnloadingCurve {
 
 // The law and its branch, with the unloading curve of δ_* from `curve_of()`, called only when
 // unloading from δ_* > δ_Y, and the branch of a yielded contact that loads from
-// `yielded_loading_branch(overlap)`. Every evaluate_contact* below is this one function: the same
-// bits either way (a caller that reads only the LawResult passes `no_branch` and lets the
-// compiler drop the branch).
+// `yielded_loading_branch(δ, F)`, F its loading force there. Every evaluate_contact* below is
+// this one function: the same bits either way (a caller that reads only the LawResult passes
+// `no_branch` and lets the compiler drop the branch).
 template <class CurveOf, class YieldedLoadingBranch>
 [[nodiscard]] inline LawOnBranch evaluate_contact_given(const ContactConstants& c, double overlap, double max_overlap,
                                                         CurveOf&& curve_of,
@@ -179,7 +190,8 @@ template <class CurveOf, class YieldedLoadingBranch>
   if (!(overlap > 0.0)) return {{0.0, max_overlap, Regime::separated}, hertz};
   if (overlap >= max_overlap) {
     const LoadingPoint point = loading_force(c, overlap);
-    return {{point.force, overlap, point.regime}, overlap > c.yield_overlap ? yielded_loading_branch(overlap) : hertz};
+    return {{point.force, overlap, point.regime},
+            overlap > c.yield_overlap ? yielded_loading_branch(overlap, point.force) : hertz};
   }
   if (max_overlap <= c.yield_overlap)  // never yielded: Hertz both ways, δ_p = 0
     return {{c.hertz_coefficient * pow_three_halves(overlap), max_overlap, Regime::elastic}, hertz};
@@ -190,7 +202,7 @@ template <class CurveOf, class YieldedLoadingBranch>
   return {{curve.coefficient * pow_three_halves(elastic_overlap), max_overlap, Regime::unloading}, unloading};
 }
 // For callers that read only the LawResult: no branch is derived.
-[[nodiscard]] inline ElasticBranch no_branch(double) noexcept { return {}; }
+[[nodiscard]] inline ElasticBranch no_branch(double, double) noexcept { return {}; }
 
 // The branch of a yielded contact that loads (δ = δ_*): the unloading curve of eq. (49) at its
 // own top, x = δ − δ_p with R_e,pmax. Its contact radius c² = R_e,pmax (δ − δ_p) f1²/f2 =
@@ -198,8 +210,10 @@ template <class CurveOf, class YieldedLoadingBranch>
 // it turns to unload. The Hertz radius instead (β = 1) made k_n and k_t jump by β at every turn
 // at δ_*, and the tangential spring lost that jump's share of its force at each reloading
 // (docs/contact_model.md, "The branch").
-[[nodiscard]] inline ElasticBranch top_of_unloading_branch(const ContactConstants& c, double overlap) noexcept {
-  const UnloadingCurveAndRadius curve = unloading_curve_and_radius(c, overlap);
+// `force` is the loading force at `overlap`, which the law has just computed.
+[[nodiscard]] inline ElasticBranch top_of_unloading_branch(const ContactConstants& c, double overlap,
+                                                           double force) noexcept {
+  const UnloadingCurveAndRadius curve = curve_and_radius_of(unloading_branch_given(c, overlap, force), c);
   return {curve.coefficient, overlap - curve.plastic_overlap, curve.radius_scale};
 }
 }  // namespace law_detail
@@ -218,7 +232,7 @@ template <class CurveOf, class YieldedLoadingBranch>
                                                             double max_overlap) noexcept {
   return law_detail::evaluate_contact_given(
       c, overlap, max_overlap, [&] { return law_detail::unloading_curve_and_radius(c, max_overlap); },
-      [&](double top) { return law_detail::top_of_unloading_branch(c, top); });
+      [&](double top, double force) { return law_detail::top_of_unloading_branch(c, top, force); });
 }
 
 // The law with the unloading curve kept by the caller (the same bits as evaluate_contact):
