@@ -183,7 +183,7 @@ std::uint64_t scenario_hash(const std::string& text) noexcept {
 
 namespace {
 
-// CRC-32 carried over consecutive pieces: crc32(a + b) = finish(extend(extend(start, a), b)).
+// CRC-32 carried over consecutive pieces: crc32(a + b) = crc32_finish(extend(extend(start, a), b)).
 constexpr std::uint32_t kCrcStart = 0xFFFFFFFFU;
 std::uint32_t crc32_extend(std::uint32_t crc, std::string_view bytes) noexcept {
   static const std::array<std::uint32_t, 256> table = [] {
@@ -198,6 +198,7 @@ std::uint32_t crc32_extend(std::uint32_t crc, std::string_view bytes) noexcept {
   for (const unsigned char byte : bytes) crc = table[(crc ^ byte) & 0xFFU] ^ (crc >> 8);
   return crc;
 }
+constexpr std::uint32_t crc32_finish(std::uint32_t crc) noexcept { return crc ^ 0xFFFFFFFFU; }
 
 // The payload goes to the file as it is produced, through a 1 MiB buffer that also feeds its
 // CRC: the checkpoint of a 10^5-particle run (350 MB) is no longer held in memory beside the
@@ -208,7 +209,7 @@ class ChecksummedWriter final : public std::streambuf {
     setp(buffer_.data(), buffer_.data() + buffer_.size());
   }
   [[nodiscard]] std::uint64_t size() const noexcept { return written_; }
-  [[nodiscard]] std::uint32_t crc() const noexcept { return crc_ ^ 0xFFFFFFFFU; }
+  [[nodiscard]] std::uint32_t crc() const noexcept { return crc32_finish(crc_); }
 
  protected:
   int_type overflow(int_type byte) override {
@@ -260,7 +261,7 @@ class ViewReader final : public std::streambuf {
 
 }  // namespace
 
-std::uint32_t crc32(std::string_view bytes) noexcept { return crc32_extend(kCrcStart, bytes) ^ 0xFFFFFFFFU; }
+std::uint32_t crc32(std::string_view bytes) noexcept { return crc32_finish(crc32_extend(kCrcStart, bytes)); }
 
 void write_checkpoint(const std::string& path, const Scenario& scenario, const ProtocolState& protocol,
                       double dt_estimate, const Simulation& simulation, const RunRecord& record) {
