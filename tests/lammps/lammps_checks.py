@@ -24,6 +24,11 @@ import sys
 import tempfile
 
 
+def mpi_launcher(args, np):
+    """The command prefix that starts lmp_ellc on np ranks (--mpirun, its --mpirun-flag values)."""
+    return [args.mpirun, *[flag for flag in args.mpirun_flag if flag], "-np", str(np)]
+
+
 def run(command, cwd):
     result = subprocess.run(command, cwd=cwd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
     if result.returncode != 0:
@@ -83,7 +88,7 @@ def check_curve(args):
         curve_csv = os.path.join(work, "curve.csv")
         lammps_csv = os.path.join(work, "lammps.csv")
         run([args.ellc, "curve", args.case, "-o", curve_csv], work)
-        launcher = [args.mpirun, *[flag for flag in args.mpirun_flag if flag], "-np", str(args.np)] if args.mpirun else []
+        launcher = mpi_launcher(args, args.np) if args.mpirun else []
         output = run([*launcher, args.lmp, "-in", args.input, "-log", "none", "-var", "out", lammps_csv,
                       "-var", "w2", args.w2, "-var", "n", args.points], work)
         if args.np > 1 and f"{args.np} by 1 by 1 MPI processor grid" not in output:
@@ -115,8 +120,8 @@ def check_curve(args):
 def check_mpi(args):
     with tempfile.TemporaryDirectory() as work:
         common = ["-in", args.input, "-log", "none", "-var", "steps", args.steps]
-        one = run([args.mpirun, *[flag for flag in args.mpirun_flag if flag], "-np", "1", args.lmp, *common], work)
-        two = run([args.mpirun, *[flag for flag in args.mpirun_flag if flag], "-np", "2", args.lmp, *common], work)
+        one = run([*mpi_launcher(args, 1), args.lmp, *common], work)
+        two = run([*mpi_launcher(args, 2), args.lmp, *common], work)
     if "2 by 1 by 1 MPI processor grid" not in two and "MPI processor grid" not in two:
         sys.exit("the 2-rank run did not report a processor grid")
     compare_thermo(one, two, args.digits, "np 2 vs np 1")
@@ -149,7 +154,7 @@ def read_dump(path):
 
 
 def check_contacts(args):
-    launcher = [args.mpirun, *[flag for flag in args.mpirun_flag if flag], "-np", str(args.np)] if args.mpirun else []
+    launcher = mpi_launcher(args, args.np) if args.mpirun else []
     with tempfile.TemporaryDirectory() as work:
         output = run([*launcher, args.lmp, "-in", args.input, "-log", "none", "-var", "steps", args.steps,
                       "-var", "dir", work], work)
@@ -214,7 +219,7 @@ def check_proven_apart(args):
     changes nothing: atoms, compute pair/local and compute ellipsoid/bk/contacts dumps equal byte
     for byte those of a run that evaluates every candidate pair. The input is run hot, so that
     pairs move in and out of reach (and turn) while lists are kept for many steps."""
-    launcher = [args.mpirun, *[flag for flag in args.mpirun_flag if flag], "-np", str(args.np)] if args.mpirun else []
+    launcher = mpi_launcher(args, args.np) if args.mpirun else []
     dumps = {}
     with tempfile.TemporaryDirectory() as work:
         for skip in ("yes", "no"):
@@ -357,7 +362,7 @@ def packing_value(text, key):
 
 
 def run_lammps(args, directory, np, output=None):
-    launcher = [args.mpirun, *[flag for flag in args.mpirun_flag if flag], "-np", str(np)] if np > 1 else []
+    launcher = mpi_launcher(args, np) if np > 1 else []
     screen = run([*launcher, args.lmp, "-in", "in.scenario", "-log", "none"], directory)
     if output is not None:
         output.append(screen)
