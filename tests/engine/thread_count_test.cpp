@@ -39,6 +39,39 @@ TEST(EngineThreadCount, FallsBackToOneThreadWhenACoreIsBusy) {
   EXPECT_LT(total, 1.10 * 5000.0);
 }
 
+// Probing costs at most about kProbeBudget over a long run, also with a 5× slower count, and a
+// losing probe stops after its first timed step.
+TEST(EngineThreadCount, ProbingCostsAboutOnePerCentOverALongRun) {
+  for (const double slower : {1.8, 5.0, 20.0}) {
+    AdaptiveThreadCount choice(2);
+    run(choice, 1000, [&](int threads) { return threads == 2 ? slower : 1.0; });  // settle first
+    const auto [on_one, on_two] = run(choice, 20000, [&](int threads) { return threads == 2 ? slower : 1.0; });
+    const double total = on_one * 1.0 + on_two * slower;
+    EXPECT_LT(total, 1.015 * 20000.0) << "two threads " << slower << "x slower";
+    EXPECT_LE(on_two, 2 * (20000 / 1024 + 1)) << "a probe ran more than two steps";
+  }
+}
+
+// What a benchmark sees: 300 steps after the first 100, with a busy core (two threads 5× slower)
+// and on a quiet machine (one thread 1.8× slower). Before probes were cut short and spaced by
+// their cost, one probe of four steps fell into such a window and cost 3-5 % with a busy core.
+TEST(EngineThreadCount, AWindowAfterTheStartPaysLittleForProbing) {
+  {
+    AdaptiveThreadCount choice(2);
+    const auto busy = [](int threads) { return threads == 2 ? 5.0 : 1.0; };
+    run(choice, 100, busy);
+    const auto [on_one, on_two] = run(choice, 300, busy);
+    EXPECT_LT(on_one * 1.0 + on_two * 5.0, 1.01 * 300.0);
+  }
+  {
+    AdaptiveThreadCount choice(2);
+    const auto quiet = [](int threads) { return threads == 2 ? 1.0 : 1.8; };
+    run(choice, 100, quiet);
+    const auto [on_one, on_two] = run(choice, 300, quiet);
+    EXPECT_LT(on_one * 1.8 + on_two * 1.0, 1.01 * 300.0);
+  }
+}
+
 TEST(EngineThreadCount, FollowsTheLoadBothWays) {
   AdaptiveThreadCount choice(2);
   run(choice, 2000, [](int threads) { return threads == 2 ? 1.0 : 1.9; });  // quiet

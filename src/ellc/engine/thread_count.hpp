@@ -6,9 +6,12 @@
 // threads 5× slower than one with one core busy). The step's results do not depend on the thread
 // count (bit for bit, tested), so the engine may change it between any two steps. This class
 // times the steps and keeps the faster count: it runs the chosen count, and now and then probes
-// the other one for a few steps. A probe that loses doubles the interval to the next one (up to
-// kLongestInterval), so a loaded machine pays at most a few per cent for the probing; a probe that
-// wins, or a chosen count that slows down by half, starts a new round at the short interval.
+// the other one for a few steps. A probe whose first timed step is already half again slower
+// than the chosen count stops there. A probe that loses at least doubles the interval to the next
+// one, and stretches it until the time the probe cost is at most kProbeBudget of the steps in
+// between (up to kLongestCostlyInterval): two threads 5× slower on a busy core cost about 8 steps per
+// probe, so the next probe comes 800 steps later. A probe that wins, or a chosen count that slows
+// down by half, starts a new round at the short interval.
 //
 // Pure bookkeeping of times, no clock and no OpenMP: the caller measures and asks.
 
@@ -19,10 +22,13 @@ namespace ellc::engine {
 
 class AdaptiveThreadCount {
  public:
-  static constexpr int kWindow = 16;             // steps averaged for the chosen count
-  static constexpr int kProbeSteps = 4;          // steps of a probe (the first one is not counted)
-  static constexpr int kShortestInterval = 64;   // steps between probes after a change
-  static constexpr int kLongestInterval = 1024;  // ... after probes that kept losing
+  static constexpr int kWindow = 16;                   // steps averaged for the chosen count
+  static constexpr int kProbeSteps = 4;                // steps of a probe (the first one is not counted)
+  static constexpr int kShortestInterval = 64;         // steps between probes after a change
+  static constexpr int kLongestInterval = 1024;        // ... after probes that kept losing
+  static constexpr int kLongestCostlyInterval = 4096;  // ... after probes that lost by far
+  static constexpr double kProbeBudget = 0.01;         // a losing probe's extra time / the steps to the next
+  static constexpr double kClearLoss = 1.5;            // a probe step this much slower ends the probe
 
   explicit AdaptiveThreadCount(int most_threads = 1) noexcept { reset(most_threads); }
 
@@ -47,15 +53,22 @@ class AdaptiveThreadCount {
     if (most_ == 1) return;
     if (probing_) {
       if (++steps_ > 1) sum_ += seconds;  // the first step wakes the pool or lets it fall asleep
-      if (steps_ < kProbeSteps) return;
-      const double probe_mean = sum_ / (kProbeSteps - 1);
+      const int timed = steps_ - 1;
+      const bool clearly_losing = timed > 0 && sum_ > kClearLoss * settled_mean_ * timed;
+      if (steps_ < kProbeSteps && !clearly_losing) return;
+      const double probe_mean = sum_ / timed;
       probing_ = false;
       if (probe_mean < 0.97 * settled_mean_) {  // the other count is faster: keep it
         settled_mean_ = probe_mean;
         interval_ = kShortestInterval;
       } else {
         current_ = other();
-        interval_ = std::min(2 * interval_, kLongestInterval);
+        // The probe's steps (the untimed first one counted at the probe's mean) cost this many
+        // steps of the chosen count beyond what the chosen count would have taken.
+        // (A zero settled time, from a clock too coarse to see a step, gives no stretch.)
+        const double extra_steps = settled_mean_ > 0.0 ? steps_ * (probe_mean / settled_mean_ - 1.0) : 0.0;
+        const double affordable = std::min(extra_steps / kProbeBudget, static_cast<double>(kLongestCostlyInterval));
+        interval_ = std::max(std::min(2 * interval_, kLongestInterval), static_cast<int>(affordable));
       }
       start_window(interval_);
       return;
