@@ -18,13 +18,16 @@ ellc=${ELLC_BIN:-build/apps/ellc}
 mkdir -p "$out"
 # The example's 2000 particles stand on 100 × 100 µm²: keep that area per particle.
 side=$(/usr/bin/python3 -c "print(f'{100.0 * ($count / 2000.0) ** 0.5:.6g}')")
-sed -e "s/^count = .*/count = $count/" -e "s/^size = .*/size = [$side, $side]/" \
-  -e "s/^approach_speed = [0-9.e-]*/approach_speed = $speed/" -e "s/^speed = [0-9.e-]*/speed = $speed/" \
-  -e "s/^lift_speed = [0-9.e-]*/lift_speed = $speed/" -e "s/^vtk_every = .*/vtk_every = 0/" \
-  -e "s/^checkpoint_every = .*/checkpoint_every = 20000/" examples/calendering.toml > "$out/scenario.toml"
+overrides=("packing.count=$count" "box.size=[$side, $side]" "calendering.approach_speed=$speed"
+  "calendering.speed=$speed" "calendering.lift_speed=$speed" "output.vtk_every=0" "output.checkpoint_every=20000")
+sets=()
+for entry in "${overrides[@]}"; do sets+=(--set "$entry"); done
+# What ran: the example and its overrides (a --restart from the checkpoint needs the same --set list).
+cp examples/calendering.toml "$out/scenario.toml"
+printf '%s\n' "${overrides[@]}" > "$out/set.txt"
 load_before=$(cut -d' ' -f1 /proc/loadavg)
 if ! /usr/bin/time -o "$out/time.txt" -f "%e %U %S %M" \
-  "$ellc" dem "$out/scenario.toml" -o "$out" --no-plot -j "$threads" > "$out/log.txt" 2>&1; then
+  "$ellc" dem "$out/scenario.toml" "${sets[@]}" -o "$out" --no-plot -j "$threads" > "$out/log.txt" 2>&1; then
   echo "calendering_large: the run failed ($out/log.txt):" >&2
   tail -3 "$out/log.txt" >&2
   exit 1

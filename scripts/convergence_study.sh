@@ -22,9 +22,8 @@ mkdir -p "$out"
 if [[ -z "${STUDY_TABLE_ONLY:-}" ]]; then
   for v in $speeds; do
     for s in $seeds; do
-      study_run "$out/v${v}_s${s}" "$scenario" "s/^seed = .*/seed = $s/" \
-        "s/^approach_speed = [0-9.e-]*/approach_speed = $v/" "s/^speed = [0-9.e-]*/speed = $v/" \
-        "s/^lift_speed = [0-9.e-]*/lift_speed = $v/" "s/^vtk_every = .*/vtk_every = 0/"
+      study_run "$out/v${v}_s${s}" "$scenario" "packing.seed=$s" "calendering.approach_speed=$v" \
+        "calendering.speed=$v" "calendering.lift_speed=$v" "output.vtk_every=0"
     done
   done
 fi

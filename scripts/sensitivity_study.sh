@@ -24,9 +24,8 @@ for variant in $variants; do
   labels+=("z${zeta}_m${mu}")
   [[ -n "${STUDY_TABLE_ONLY:-}" ]] && continue
   for s in $seeds; do
-    study_run "$out/z${zeta}_m${mu}_s${s}" "$scenario" "s/^seed = .*/seed = $s/" \
-      "s/^damping_ratio = [0-9.e-]*/damping_ratio = $zeta/" "s/^friction = [0-9.e-]*/friction = $mu/" \
-      "s/^vtk_every = .*/vtk_every = 0/"
+    study_run "$out/z${zeta}_m${mu}_s${s}" "$scenario" "packing.seed=$s" "contact.damping_ratio=$zeta" \
+      "contact.friction=$mu" "walls.friction=$mu" "output.vtk_every=0"
   done
 done
 /usr/bin/python3 scripts/study/tables.py sensitivity "$out" "${labels[*]}" "$seeds" "$scenario"

@@ -52,11 +52,12 @@ struct DemOptions {
   bool no_plot = false;
   bool quiet = false;
   long long max_steps = 0;
-  std::string seeds;           // --seeds N: an ensemble of N consecutive packing seeds
-  std::string jobs;            // --jobs J: ensemble members side by side
-  bool compare_hertz = false;  // --compare-hertz: the same packing again with plain Hertz
-  std::string compare;         // --compare LAW[,LAW]: the same packing again with each law
-  bool check = false;          // --check: validate the scenario and print its plan only
+  std::string seeds;                   // --seeds N: an ensemble of N consecutive packing seeds
+  std::string jobs;                    // --jobs J: ensemble members side by side
+  bool compare_hertz = false;          // --compare-hertz: the same packing again with plain Hertz
+  std::string compare;                 // --compare LAW[,LAW]: the same packing again with each law
+  bool check = false;                  // --check: validate the scenario and print its plan only
+  std::vector<std::string> overrides;  // --set KEY=VALUE: scenario entries replaced before validation
 };
 
 std::string clock_text(double seconds) {
@@ -445,11 +446,11 @@ void run_dem(const DemOptions& options) {
 #ifdef _OPENMP
   if (options.threads > 0) omp_set_num_threads(options.threads);
 #endif
-  scenario::Scenario loaded = scenario::read_scenario(options.scenario_path);
+  scenario::Scenario loaded = scenario::read_scenario(options.scenario_path, options.overrides);
   const std::vector<const ComparedLaw*> laws = compared_laws(options);
   const scenario::RunPlan plan = check_plan(options, loaded);
   if (options.check) {
-    std::printf("ellc dem: %s is valid: %s\n", options.scenario_path.c_str(), scenario::describe_plan(plan).c_str());
+    std::printf("ellc dem: %s is valid: %s\n", loaded.source.c_str(), scenario::describe_plan(plan).c_str());
     for (const auto& warning : loaded.warnings) std::fprintf(stderr, "ellc: warning: %s\n", warning.c_str());
     return;
   }
@@ -533,6 +534,7 @@ const RegisterCommand registration([](CLI::App& root) {
                       "springback, thickness, plastic share and energies");
   command->add_flag("--check", options->check, "Read and validate the scenario, print its plan, run nothing");
   command->add_option("--jobs", options->jobs, "Ensemble members run side by side (default 1; one engine thread each)");
+  add_scenario_overrides(*command, options->overrides);
   command->callback([options] { run_dem(*options); });
 });
 

@@ -20,6 +20,7 @@
 #include <sstream>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "command_registry.hpp"
 #include "ellc/engine/time_step.hpp"
@@ -37,7 +38,8 @@ struct ExportOptions {
   std::string scenario_path;
   std::string output_directory;
   long long seed = -1;
-  std::string name = "scenario";  // in.NAME; the data file is packing.data, or NAME.data for another name
+  std::string name = "scenario";       // in.NAME; the data file is packing.data, or NAME.data for another name
+  std::vector<std::string> overrides;  // --set KEY=VALUE, as for ellc dem
 };
 
 std::string number(double value) { return format_number(value); }
@@ -341,7 +343,7 @@ void write_input(const std::string& path, const std::string& data_name, const sc
 }
 
 void run_export(const ExportOptions& options) {
-  scenario::Scenario scenario = scenario::read_scenario(options.scenario_path);
+  scenario::Scenario scenario = scenario::read_scenario(options.scenario_path, options.overrides);
   if (options.seed >= 0) scenario.packing.seed = static_cast<std::uint64_t>(options.seed);
   for (const auto& warning : scenario.warnings) std::fprintf(stderr, "ellc: warning: %s\n", warning.c_str());
   const scenario::PackingSpec& spec = scenario.packing;
@@ -382,6 +384,7 @@ const RegisterCommand registration([](CLI::App& root) {
       ->required();
   command->add_option("--seed", options->seed, "Packing seed (default: the scenario's [packing] seed)");
   command->add_option("--name", options->name, "Write in.NAME and NAME.data (default: in.scenario, packing.data)");
+  add_scenario_overrides(*command, options->overrides);
   command->callback([options] { run_export(*options); });
 });
 

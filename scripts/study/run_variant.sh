@@ -1,10 +1,11 @@
 #!/usr/bin/env bash
 # One run of a scenario study (sourced by scripts/convergence_study.sh and sensitivity_study.sh).
 #
-#   study_run DIR SCENARIO.toml [sed expression ...]
+#   study_run DIR SCENARIO.toml [KEY=VALUE ...]
 #
-# Writes DIR/scenario.toml (SCENARIO.toml edited by the sed expressions) and runs `ellc dem` on it
-# into DIR. Resumable: a run whose DIR/summary.txt says `finished = true` is skipped, and a run
+# Copies SCENARIO.toml to DIR/scenario.toml, writes the overrides to DIR/set.txt (one per line)
+# and runs `ellc dem DIR/scenario.toml --set KEY=VALUE ...` into DIR (the summary's header lists
+# the overrides). Resumable: a run whose DIR/summary.txt says `finished = true` is skipped, and a run
 # that was interrupted continues from DIR/checkpoint.bin when it has one (written every
 # [output] checkpoint_every steps) rather than from the start; a run another study process is
 # running (DIR/.lock) is skipped. ELLC_BIN (default build/apps/ellc)
@@ -34,22 +35,25 @@ study_run_locked() {
   local dir=$1 scenario=$2
   shift 2
   local ellc=${ELLC_BIN:-build/apps/ellc} threads=${ELLC_THREADS:-1}
-  local expressions=()
-  for expression in "$@"; do expressions+=(-e "$expression"); done
-  sed "${expressions[@]}" "$scenario" > "$dir/scenario.toml.new"
-  # A checkpoint only continues the scenario that wrote it: restart only if the file is unchanged.
-  if [[ -f "$dir/checkpoint.bin" ]] && cmp -s "$dir/scenario.toml.new" "$dir/scenario.toml"; then
+  local sets=()
+  for entry in "$@"; do sets+=(--set "$entry"); done
+  cp "$scenario" "$dir/scenario.toml.new"
+  printf '%s\n' "$@" > "$dir/set.txt.new"
+  # A checkpoint only continues the scenario that wrote it: restart only if file and overrides are unchanged.
+  if [[ -f "$dir/checkpoint.bin" ]] && cmp -s "$dir/scenario.toml.new" "$dir/scenario.toml" &&
+    cmp -s "$dir/set.txt.new" "$dir/set.txt"; then
     echo "study: continuing $dir from its checkpoint" >&2
-    if "$ellc" dem "$dir/scenario.toml" -o "$dir" --no-plot -q -j "$threads" --restart "$dir/checkpoint.bin" \
-        >> "$dir/log.txt" 2>&1; then
-      rm -f "$dir/scenario.toml.new"
+    if "$ellc" dem "$dir/scenario.toml" "${sets[@]}" -o "$dir" --no-plot -q -j "$threads" \
+        --restart "$dir/checkpoint.bin" >> "$dir/log.txt" 2>&1; then
+      rm -f "$dir/scenario.toml.new" "$dir/set.txt.new"
       return 0
     fi
     echo "study: the restart of $dir failed (see $dir/log.txt); running it again from the start" >&2
   fi
   mv "$dir/scenario.toml.new" "$dir/scenario.toml"
+  mv "$dir/set.txt.new" "$dir/set.txt"
   rm -f "$dir/checkpoint.bin" "$dir/summary.txt" "$dir/timeseries.csv"
   echo "study: running $dir" >&2
-  "$ellc" dem "$dir/scenario.toml" -o "$dir" --no-plot -q -j "$threads" > "$dir/log.txt" 2>&1 ||
+  "$ellc" dem "$dir/scenario.toml" "${sets[@]}" -o "$dir" --no-plot -q -j "$threads" > "$dir/log.txt" 2>&1 ||
     echo "study: $dir failed (see $dir/log.txt)" >&2
 }

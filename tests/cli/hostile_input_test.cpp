@@ -152,3 +152,25 @@ TEST_F(HostileCli, PoorFitWritesNothingUnlessAccepted) {
 }
 
 }  // namespace
+
+namespace {
+// `--set KEY=VALUE` before or after the scenario: applied (the plan changes), checked like the
+// file (exit 2 naming the field and the --set), and refused when malformed.
+TEST_F(HostileCli, SetOverridesAScenarioEntryAndIsChecked) {
+  const std::string quick = (fs::path(ELLC_EXAMPLES_DIR) / "calendering_quick.toml").string();
+  const CliRun plain = run_cli("dem " + quick + " --check");
+  const CliRun halved = run_cli("dem --set calendering.speed=0.025 " + quick + " --set packing.seed=7 --check");
+  ASSERT_EQ(halved.exit_code, 0) << halved.output;
+  EXPECT_NE(halved.output.find("--set calendering.speed=0.025 --set packing.seed=7 is valid"), std::string::npos)
+      << halved.output;
+  EXPECT_NE(halved.output, plain.output) << "the slower plate should plan more steps";
+
+  const CliRun bad = run_cli("dem " + quick + " --set calendering.speed=-1 --check");
+  EXPECT_EQ(bad.exit_code, 2) << bad.output;
+  EXPECT_NE(bad.output.find("calendering.speed = -1: expected"), std::string::npos) << bad.output;
+  const CliRun malformed = run_cli("dem " + quick + " --set calendering.speed --check");
+  EXPECT_NE(malformed.exit_code, 0);
+  EXPECT_NE(malformed.output.find("--set calendering.speed: expected KEY=VALUE"), std::string::npos)
+      << malformed.output;
+}
+}  // namespace

@@ -25,6 +25,28 @@ TEST(EngineScenarioInput, UnknownKeyIsNamed) {
   EXPECT_NE(message.find("packing.colour"), std::string::npos) << message;
 }
 
+// `ellc dem --set`: overrides change the named entries before validation, are checked like the
+// file (the error names the field and the --set), and are part of the text a checkpoint hashes.
+TEST(EngineScenarioInput, OverridesReplaceEntriesAndAreValidatedLikeTheFile) {
+  const std::string text = quick_scenario_text();
+  const Scenario plain = parse_scenario(text, "calendering_quick.toml");
+  const Scenario changed =
+      parse_scenario(text, "calendering_quick.toml", {"calendering.speed=0.025", "packing.seed=2027"});
+  EXPECT_EQ(changed.calendering.speed, 0.025);
+  EXPECT_EQ(changed.calendering.lift_speed, plain.calendering.lift_speed);
+  EXPECT_EQ(changed.calendering.approach_speed, plain.calendering.approach_speed);
+  EXPECT_NE(changed.text, plain.text) << "a checkpoint of the changed run would restart the plain one";
+  EXPECT_EQ(changed.source, "calendering_quick.toml --set calendering.speed=0.025 --set packing.seed=2027");
+
+  const std::string bad =
+      input_error_message([&] { (void)parse_scenario(text, "calendering_quick.toml", {"calendering.speed=-1"}); });
+  EXPECT_NE(bad.find("calendering.speed"), std::string::npos) << bad;
+  EXPECT_NE(bad.find("--set calendering.speed=-1"), std::string::npos) << bad;
+  const std::string unknown =
+      input_error_message([&] { (void)parse_scenario(text, "calendering_quick.toml", {"calendering.sped=0.1"}); });
+  EXPECT_NE(unknown.find("calendering.sped"), std::string::npos) << unknown;
+}
+
 TEST(EngineScenarioInput, ParticleLargerThanBoxIsNamed) {
   const std::string text = replace_line(quick_scenario_text(), "size", "size = [30.0, 42.0]");
   const std::string message = input_error_message([&] { (void)quick_scenario(text); });

@@ -302,8 +302,8 @@ Checkpoint parse_checkpoint(std::string_view bytes, const std::string& source, c
     binary::get(in, hash);
     if (hash != scenario_hash(scenario.text))
       throw InputError(source, "--restart", source,
-                       "a checkpoint written by this same scenario file (" + scenario.source +
-                           " has changed since, or is another scenario)");
+                       "a checkpoint written by this same scenario file with the same --set entries (" +
+                           scenario.source + " has changed since, or is another scenario)");
     ProtocolState& protocol = checkpoint.protocol;
     protocol_fields(
         [&in](auto& value) {

@@ -122,9 +122,12 @@ struct Scenario {
   std::vector<std::string> warnings;
 };
 
-// Reads and validates; throws InputError naming the field (unknown keys included).
-[[nodiscard]] Scenario read_scenario(const std::string& path);
-[[nodiscard]] Scenario parse_scenario(std::string_view toml_text, const std::string& source);
+// Reads and validates; throws InputError naming the field (unknown keys included). `overrides`
+// ("calendering.speed=0.025", ...: `ellc dem --set`, io/toml_overrides.hpp) edit the file's
+// entries before validation; they then appear in `source` and in `text`.
+[[nodiscard]] Scenario read_scenario(const std::string& path, const std::vector<std::string>& overrides = {});
+[[nodiscard]] Scenario parse_scenario(std::string_view toml_text, const std::string& source,
+                                      const std::vector<std::string>& overrides = {});
 
 // The time-step estimate of a packing of the scenario: safety × the Rayleigh time of its smallest
 // semi-axis, the shortest over the species (each with its density and material).

@@ -16,6 +16,7 @@
 #include "ellc/contact/contact_parameters.hpp"
 #include "ellc/io/input_error.hpp"
 #include "ellc/io/table_reader.hpp"
+#include "ellc/io/toml_overrides.hpp"
 #include "ellc/material/material.hpp"
 #include "ellc/scenario/ensemble.hpp"
 #include "ellc/scenario/packing_import.hpp"
@@ -519,10 +520,20 @@ Scenario read(const toml::table& root_table, const std::string& source, std::str
 
 }  // namespace
 
-Scenario read_scenario(const std::string& path) { return parse_scenario(read_text_file(path), path); }
+Scenario read_scenario(const std::string& path, const std::vector<std::string>& overrides) {
+  return parse_scenario(read_text_file(path), path, overrides);
+}
 
-Scenario parse_scenario(std::string_view toml_text, const std::string& source) {
-  return read(parse_toml_text(toml_text, source), source, std::string(toml_text));
+Scenario parse_scenario(std::string_view toml_text, const std::string& source,
+                        const std::vector<std::string>& overrides) {
+  if (overrides.empty()) return read(parse_toml_text(toml_text, source), source, std::string(toml_text));
+  toml::table root = parse_toml_text(toml_text, source);
+  apply_toml_overrides(root, overrides);
+  // The overrides are part of the input: in every message, the summary's header, and the text whose
+  // hash a checkpoint carries (so --restart needs the same --set entries).
+  std::string text(toml_text);
+  for (const std::string& entry : overrides) text += "\n# --set " + entry;
+  return read(root, describe_overrides(source, overrides), std::move(text));
 }
 
 }  // namespace ellc::scenario
