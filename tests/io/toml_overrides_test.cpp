@@ -49,8 +49,8 @@ TEST(TomlOverrides, ReplacesExactlyTheNamedEntry) {
 
 TEST(TomlOverrides, ValuesAreTomlOfAnyType) {
   toml::table root = sample();
-  apply_toml_overrides(root, {R"(calendering.hold="servo")", "box.size=[100, 80.5]", "output.vtk=false",
-                              "calendering.speed=1e-2"});
+  apply_toml_overrides(
+      root, {R"(calendering.hold="servo")", "box.size=[100, 80.5]", "output.vtk=false", "calendering.speed=1e-2"});
   EXPECT_EQ(root["calendering"]["hold"].value<std::string>(), "servo");
   ASSERT_NE(root["box"]["size"].as_array(), nullptr) << "a missing table on the path is created";
   EXPECT_EQ(root["box"]["size"][1].value<double>(), 80.5);

@@ -8,7 +8,8 @@ namespace ellc {
 
 namespace {
 
-constexpr std::string_view kKeyForm = "KEY=VALUE with KEY a dotted path of bare TOML keys, e.g. calendering.speed=0.025";
+constexpr std::string_view kKeyForm =
+    "KEY=VALUE with KEY a dotted path of bare TOML keys, e.g. calendering.speed=0.025";
 
 [[noreturn]] void fail(const std::string& option, const std::string& entry, std::string_view expected) {
   throw InputError("", option + " " + entry + ": expected " + std::string(expected));
