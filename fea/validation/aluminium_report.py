@@ -20,7 +20,7 @@ import numpy as np
 
 from .calibration_report import HERTZ_CONSISTENT, grid_runs, pre_yield_deviation
 from .curves import REPO, ellc_binary
-from .data import complete_runs
+from .data import complete_runs, load_run
 from .errors import force_errors
 from .fit import loading_points
 from .plotting import figure, save
@@ -39,6 +39,12 @@ def aluminium_runs() -> tuple[list, list]:
     """(fit runs, held-out runs) at the aluminium calibration mesh."""
     runs = [r for r in complete_runs("g", DATA) if r.record["mesh_level"] == MESH]
     return [r for r in runs if r.name not in HOLD_OUT], [r for r in runs if r.name in HOLD_OUT]
+
+
+def partial_held_out_runs() -> list:
+    """Held-out runs that stopped before the end: their converged loading increments only."""
+    return [r for r in (load_run(name, DATA, status="incomplete") for name in HOLD_OUT)
+            if r is not None and r.record["mesh_level"] == MESH]
 
 
 def nmc_fit_runs() -> list:
@@ -133,6 +139,13 @@ def results() -> dict:
     out["models"] = {"paper (NMC)": None, "anchored": anchored, "joint": joint}
     out["messages"] = {"anchored": message_a, "joint": message_j}
     out["nmc_fit_cases"] = [r.name for r in nmc]
+    out["partial"] = {}
+    for run in partial_held_out_runs():  # loading only, as far as the FE run converged
+        contact = run.contact()
+        out["partial"][run.name] = {"run": run, "delta_max_over_delta_y": float(run.overlap.max() / contact.delta_y),
+                                    **{label: holdout_errors(run, model)
+                                       for label, model in out["models"].items()
+                                       if label == "paper (NMC)" or model is not None}}
     for run in held + fit_runs:  # the fit cases too, marked as such: how well the form reproduces them
         out["cases"][run.name] = {"run": run, "role": "held out" if run in held else "fit",
                                   **{label: holdout_errors(run, model)
@@ -169,6 +182,20 @@ def holdout_table(res: dict) -> list[str]:
     return markdown_table(["case", "constants", "loading: mean rel. error", "max rel. error",
                            "unloading: mean abs(ΔF) / F_max", "δ_p (µm): FE / law", "δ_max (µm)"],
                           "llrrrrr", body)
+
+
+def partial_table(res: dict) -> list[str]:
+    """Held-out runs that stopped early: loading error over the increments that converged."""
+    body = []
+    for name, entry in res.get("partial", {}).items():
+        for label in CONSTANT_SETS:
+            e = entry.get(label)
+            if e is None:
+                continue
+            body.append([name, label, pct(e["loading_mean"]), pct(e["loading_max"]),
+                         f"{e['delta_max']:.4f} ({entry['delta_max_over_delta_y']:.0f} δ_Y)"])
+    return markdown_table(["case (stopped early)", "constants", "loading: mean rel. error", "max rel. error",
+                           "last converged δ (µm)"], "llrrr", body)
 
 
 def plot_holdout(res: dict) -> str | None:

@@ -41,11 +41,13 @@ def case_file_of(record: dict) -> str:
     return shlex.split(record["command"])[1]
 
 
-def load_run(name: str, data_dir: str = DATA) -> Run | None:
-    """The complete run `name`, or None if it has no complete CSV."""
+def load_run(name: str, data_dir: str = DATA, status: str = "complete") -> Run | None:
+    """The run `name` with that manifest status ("complete": NAME.csv; "incomplete": the converged
+    increments of a stopped run, NAME.incomplete.csv), or None if there is no such CSV."""
     record = read_manifest(os.path.join(data_dir, "manifest.json")).get(name)
-    csv = os.path.join(data_dir, f"{name}.csv")
-    if record is None or record.get("status") != "complete" or not os.path.exists(csv):
+    suffix = ".csv" if status == "complete" else ".incomplete.csv"
+    csv = os.path.join(data_dir, f"{name}{suffix}")
+    if record is None or record.get("status") != status or not os.path.exists(csv):
         return None
     case = replace(load_case(os.path.join(REPO, case_file_of(record))), name=name,
                    points_per_segment=record["points_per_segment"])

@@ -106,13 +106,16 @@ def main() -> int:
     if aluminium["models"]:
         text = _replace(text, "aluminium_constants", alu.constants_table(aluminium))
         text = _replace(text, "aluminium_holdout", alu.holdout_table(aluminium))
+        text = _replace(text, "aluminium_partial", alu.partial_table(aluminium))
         text = _replace(text, "aluminium_nmc", alu.nmc_check(aluminium))
         alu.plot_holdout(aluminium)
         summary["aluminium"] = {
             "fit_cases": aluminium["fit_cases"], "held_out": aluminium["held_out"],
             "nmc_fit_cases": aluminium.get("nmc_fit_cases", []), "models": aluminium["models"],
             "cases": {n: {k: ({q: v for q, v in e.items() if q != "force"} if isinstance(e, dict) else e)
-                          for k, e in c.items() if k != "run"} for n, c in aluminium["cases"].items()}}
+                          for k, e in c.items() if k != "run"} for n, c in aluminium["cases"].items()},
+            "partial": {n: {k: ({q: v for q, v in e.items() if q != "force"} if isinstance(e, dict) else e)
+                            for k, e in c.items() if k != "run"} for n, c in aluminium.get("partial", {}).items()}}
     with open(DOC, "w") as fh:
         fh.write(text)
     with open(SUMMARY, "w") as fh:

@@ -5,6 +5,9 @@ on the aluminium fit cases (docs/validation.md Sec. 6, command in data/fea/alumi
   * At NMC's E_e/Y it must stay within the NMC bounds of test_law_vs_fea.py (same tolerances).
   * On every committed aluminium run (fit and held-out) the loading error stays below
     AL_LOADING_MEAN / AL_LOADING_MAX, and below the paper's constants' error (what a user gains).
+  * On the held-out runs that stopped early (their converged loading increments) the same, except
+    where a known miss is marked xfail(strict): it fails once the miss is gone, so the docs get
+    updated.
 """
 import os
 import tomllib
@@ -13,7 +16,7 @@ import numpy as np
 import pytest
 
 from test_law_vs_fea import LOADING_MAX, LOADING_MEAN, PROTOCOL_MEAN
-from validation.aluminium_report import DATA, MESH, law_curve
+from validation.aluminium_report import DATA, MESH, law_curve, partial_held_out_runs
 from validation.calibration_report import HERTZ_CONSISTENT, grid_runs, pre_yield_deviation
 from validation.data import complete_runs
 from validation.errors import force_errors
@@ -66,3 +69,28 @@ def test_model_is_the_paper_law_at_nmc(cli):
     d = np.asarray(run.overlap, float)
     np.testing.assert_allclose(law_curve(run, d, stiffness_model())["force"], law_curve(run, d, None)["force"],
                                rtol=1e-12)
+
+
+PARTIAL = {r.name: r for r in partial_held_out_runs()}
+# g24 (stopped at 49 delta_Y): the law is 5-8 % low from 4 to 20 delta_Y, mean 5.8 % (docs/validation.md Sec. 6).
+PARTIAL_MEAN_MISSES = {"g24_prolate_oblate"}
+
+
+def _partial_errors(name: str) -> tuple[dict, dict]:
+    run = PARTIAL[name]
+    d, f = loading_points(run.overlap, run.force)
+    return force_errors(law_curve(run, d, stiffness_model())["force"], f), force_errors(law_curve(run, d, None)["force"], f)
+
+
+@pytest.mark.parametrize("name", sorted(PARTIAL))
+def test_aluminium_partial_held_out_max_within_bounds_and_better_than_nmc_constants(cli, name):
+    ours, paper = _partial_errors(name)
+    assert ours["max_rel"] < AL_LOADING_MAX, ours
+    assert ours["mean_rel"] < paper["mean_rel"], (ours, paper)
+
+
+@pytest.mark.parametrize("name", [pytest.param(n, marks=pytest.mark.xfail(strict=True, reason="known miss, documented"))
+                                  if n in PARTIAL_MEAN_MISSES else n for n in sorted(PARTIAL)])
+def test_aluminium_partial_held_out_mean_within_bounds(cli, name):
+    ours, _ = _partial_errors(name)
+    assert ours["mean_rel"] < AL_LOADING_MEAN, ours
