@@ -62,7 +62,7 @@ void write_data_file(const std::string& path, const scenario::Scenario& scenario
   std::ofstream out(path);
   if (!out) throw std::runtime_error("cannot write " + path);
   out.precision(17);
-  out << "LAMMPS data file: the packing of " << std::filesystem::path(scenario.source).filename().string() << " (seed "
+  out << "LAMMPS data file: the packing of " << std::filesystem::path(scenario.path).filename().string() << " (seed "
       << scenario.packing.seed << "), written by ellc export-lammps; units micro\n\n";
   // Several species ([[species]]): atom type k + 1 is species k, with its own density.
   const std::vector<scenario::SpeciesSpec> species = scenario::species_of(scenario.packing);
@@ -142,9 +142,10 @@ void write_input(const std::string& path, const std::string& data_name, const sc
   };
   const double travel = std::max(plate_start - solid / (0.64 * area), 1.0);
 
-  out << "# " << std::filesystem::path(scenario.source).filename().string()
-      << " for LAMMPS: written by `ellc export-lammps` (docs/lammps.md).\n"
-      << "# Run in this directory:  lmp_ellc -in " << std::filesystem::path(path).filename().string()
+  out << "# " << std::filesystem::path(scenario.path).filename().string()
+      << " for LAMMPS: written by `ellc export-lammps` (docs/lammps.md).\n";
+  if (scenario.source != scenario.path) out << "# With the overrides of: " << scenario.source << "\n";
+  out << "# Run in this directory:  lmp_ellc -in " << std::filesystem::path(path).filename().string()
       << "   (or mpirun -np N lmp_ellc -in ...)\n"
       << "# Units micro: µm, µs, pg, nN, kPa (the scenario's masses, forces and pressures x 1e3).\n"
       << "# Writes timeseries.csv with the built-in engine's column names.\n\n"

@@ -181,5 +181,25 @@ TEST(PackingImport, ScenarioReadsThePackingFile) {
   EXPECT_NE(both.find("count"), std::string::npos) << both;
 }
 
+// A relative [packing] file is found next to the scenario, also when an --set entry (here the file
+// itself, a path with a '/') is part of the scenario's description.
+TEST(PackingImport, RelativeFileIsResolvedAgainstTheScenarioFileDespiteOverrides) {
+  const std::filesystem::path folder = std::filesystem::temp_directory_path() / "ellc_packing_import_relative";
+  std::filesystem::create_directories(folder / "sub");
+  std::ofstream(folder / "sub" / "two.csv") << "x,y,z,a,b,c,qw,qx,qy,qz\n5,5,6,4,3,2,1,0,0,0\n9,9,9,2,2,2,1,0,0,0\n";
+  std::ofstream(folder / "one.csv") << "x,y,z,a,b,c,qw,qx,qy,qz\n5,5,6,2,2,2,1,0,0,0\n";
+  const std::string toml =
+      "[material]\nyoungs_modulus = 142000.0\npoisson_ratio = 0.25\nyield_stress = 7900.0\n"
+      "[box]\nsize = [30.0, 20.0]\n[packing]\nfile = \"one.csv\"\ndensity = 4.7e-3\n"
+      "[calendering]\nspeed = 0.1\ntarget_pressure = 100.0\n";
+  const std::string path = (folder / "import.toml").string();
+  EXPECT_EQ(parse_scenario(toml, path).packing.file, (folder / "one.csv").string());
+  const Scenario changed = parse_scenario(toml, path, {"packing.file=sub/two.csv"});
+  EXPECT_EQ(changed.packing.file, (folder / "sub" / "two.csv").string());
+  EXPECT_EQ(changed.packing.count, 2U);
+  EXPECT_EQ(changed.path, path);
+  EXPECT_NE(changed.source.find("--set packing.file=sub/two.csv"), std::string::npos) << changed.source;
+}
+
 }  // namespace
 }  // namespace ellc::scenario

@@ -103,7 +103,8 @@ struct AnalysisSpec {
 };
 
 struct Scenario {
-  std::string source;  // file name, for messages
+  std::string source;  // file name and any --set entries, for messages
+  std::string path;    // the file it was read from: relative paths in it start from its folder
   std::string text;    // the file's text (its hash goes into checkpoints)
   engine::ContactSettings contact;
   PackingSpec packing;

@@ -156,7 +156,7 @@ void measure_imported_packing(Scenario& scenario) {
 void read_packing_file(TableReader& table, Scenario& scenario, bool several_species) {
   PackingSpec& spec = scenario.packing;
   const std::filesystem::path given = table.optional_string("file").value_or("");
-  spec.file = (given.is_absolute() ? given : std::filesystem::path(scenario.source).parent_path() / given).string();
+  spec.file = (given.is_absolute() ? given : std::filesystem::path(scenario.path).parent_path() / given).string();
   scenario.material_density = table.positive("density");
   spec.seed = static_cast<std::uint64_t>(table.integer_at_least("seed", 0, 1));
   table.finish();
@@ -463,10 +463,11 @@ void cross_check(const Scenario& scenario) {
                      "\"fixed\", or a target_pressure for the servo to hold");
 }
 
-Scenario read(const toml::table& root_table, const std::string& source, std::string text) {
+Scenario read(const toml::table& root_table, const std::string& path, const std::string& source, std::string text) {
   TableReader root(root_table, "", source);
   Scenario scenario;
   scenario.source = source;
+  scenario.path = path;
   scenario.text = std::move(text);
   std::vector<TableReader> species_tables = root.tables("species");
   const bool several_species = !species_tables.empty();
@@ -526,14 +527,14 @@ Scenario read_scenario(const std::string& path, const std::vector<std::string>& 
 
 Scenario parse_scenario(std::string_view toml_text, const std::string& source,
                         const std::vector<std::string>& overrides) {
-  if (overrides.empty()) return read(parse_toml_text(toml_text, source), source, std::string(toml_text));
+  if (overrides.empty()) return read(parse_toml_text(toml_text, source), source, source, std::string(toml_text));
   toml::table root = parse_toml_text(toml_text, source);
   apply_toml_overrides(root, overrides);
   // The overrides are part of the input: in every message, the summary's header, and the text whose
   // hash a checkpoint carries (so --restart needs the same --set entries).
   std::string text(toml_text);
   for (const std::string& entry : overrides) text += "\n# --set " + entry;
-  return read(root, describe_overrides(source, overrides), std::move(text));
+  return read(root, source, describe_overrides(source, overrides), std::move(text));
 }
 
 }  // namespace ellc::scenario
