@@ -194,11 +194,11 @@ TEST(PackingImport, RelativeFileIsResolvedAgainstTheScenarioFileDespiteOverrides
       "[calendering]\nspeed = 0.1\ntarget_pressure = 100.0\n";
   const std::string path = (folder / "import.toml").string();
   EXPECT_EQ(parse_scenario(toml, path).packing.file, (folder / "one.csv").string());
-  const Scenario changed = parse_scenario(toml, path, {"packing.file=sub/two.csv"});
+  const Scenario changed = parse_scenario(toml, path, {"packing.file=\"sub/two.csv\""});
   EXPECT_EQ(changed.packing.file, (folder / "sub" / "two.csv").string());
   EXPECT_EQ(changed.packing.count, 2U);
   EXPECT_EQ(changed.path, path);
-  EXPECT_NE(changed.source.find("--set packing.file=sub/two.csv"), std::string::npos) << changed.source;
+  EXPECT_NE(changed.source.find("--set packing.file=\"sub/two.csv\""), std::string::npos) << changed.source;
 }
 
 }  // namespace
