@@ -141,17 +141,19 @@ def results() -> dict:
     out["nmc_fit_cases"] = [r.name for r in nmc]
     out["partial"] = {}
     for run in partial_held_out_runs():  # loading only, as far as the FE run converged
-        contact = run.contact()
-        out["partial"][run.name] = {"run": run, "delta_max_over_delta_y": float(run.overlap.max() / contact.delta_y),
-                                    **{label: holdout_errors(run, model)
-                                       for label, model in out["models"].items()
-                                       if label == "paper (NMC)" or model is not None}}
+        reach = float(run.overlap.max() / run.contact().delta_y)
+        out["partial"][run.name] = {"run": run, "delta_max_over_delta_y": reach,
+                                    **errors_by_constants(run, out["models"])}
     for run in held + fit_runs:  # the fit cases too, marked as such: how well the form reproduces them
         out["cases"][run.name] = {"run": run, "role": "held out" if run in held else "fit",
-                                  **{label: holdout_errors(run, model)
-                                                  for label, model in out["models"].items()
-                                                  if label == "paper (NMC)" or model is not None}}
+                                  **errors_by_constants(run, out["models"])}
     return out
+
+
+def errors_by_constants(run, models: dict) -> dict:
+    """holdout_errors of `run` for every constant set that exists (the paper's always)."""
+    return {label: holdout_errors(run, model) for label, model in models.items()
+            if label == "paper (NMC)" or model is not None}
 
 
 def constants_table(res: dict) -> list[str]:

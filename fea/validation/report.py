@@ -30,6 +30,12 @@ def _replace(text: str, key: str, lines: list[str]) -> str:
     return pattern.sub(lambda m: m.group(1) + "\n".join(lines) + "\n" + m.group(2), text)
 
 
+def _summary_entries(cases: dict) -> dict:
+    """Per-case results for the JSON summary: without the Run objects and the law's force arrays."""
+    return {n: {k: ({q: v for q, v in e.items() if q != "force"} if isinstance(e, dict) else e)
+                for k, e in c.items() if k != "run"} for n, c in cases.items()}
+
+
 def _constants_table(fits: dict[str, dict], n_best: float) -> list[str]:
     keys = ("m", "o", "p", "s", "t", "u")
     body = [[label, *(f"{f[k]:.2f}" for k in keys), f"{f['n']:.2f}", f"{f['lam_rms']:.3f}", f"{f['eps_rms']:.2f}"]
@@ -112,10 +118,7 @@ def main() -> int:
         summary["aluminium"] = {
             "fit_cases": aluminium["fit_cases"], "held_out": aluminium["held_out"],
             "nmc_fit_cases": aluminium.get("nmc_fit_cases", []), "models": aluminium["models"],
-            "cases": {n: {k: ({q: v for q, v in e.items() if q != "force"} if isinstance(e, dict) else e)
-                          for k, e in c.items() if k != "run"} for n, c in aluminium["cases"].items()},
-            "partial": {n: {k: ({q: v for q, v in e.items() if q != "force"} if isinstance(e, dict) else e)
-                            for k, e in c.items() if k != "run"} for n, c in aluminium.get("partial", {}).items()}}
+            "cases": _summary_entries(aluminium["cases"]), "partial": _summary_entries(aluminium.get("partial", {}))}
     with open(DOC, "w") as fh:
         fh.write(text)
     with open(SUMMARY, "w") as fh:

@@ -59,13 +59,22 @@ def test_nmc_paper_protocols_within_the_nmc_bounds(cli, name):
 ALUMINIUM_MISSES = {"g16_flat_pair"}
 
 
-@pytest.mark.parametrize("name", [pytest.param(n, marks=pytest.mark.xfail(strict=True, reason="known miss, documented"))
-                                  if n in ALUMINIUM_MISSES else n for n in ALUMINIUM])
-def test_aluminium_loading_within_bounds_and_better_than_nmc_constants(cli, name):
-    run = next(r for r in complete_runs(name, DATA) if r.name == name)
+def with_known_misses(names, misses) -> list:
+    """The names as pytest parameters, those in `misses` marked xfail(strict=True)."""
+    return [pytest.param(n, marks=pytest.mark.xfail(strict=True, reason="known miss, documented"))
+            if n in misses else n for n in names]
+
+
+def loading_errors(run) -> tuple[dict, dict]:
+    """Loading error of the committed model and of the paper's constants (no [model])."""
     d, f = loading_points(run.overlap, run.force)
     ours = force_errors(law_curve(run, d, stiffness_model())["force"], f)
-    paper = force_errors(law_curve(run, d, None)["force"], f)
+    return ours, force_errors(law_curve(run, d, None)["force"], f)
+
+
+@pytest.mark.parametrize("name", with_known_misses(ALUMINIUM, ALUMINIUM_MISSES))
+def test_aluminium_loading_within_bounds_and_better_than_nmc_constants(cli, name):
+    ours, paper = loading_errors(next(r for r in complete_runs(name, DATA) if r.name == name))
     assert ours["mean_rel"] < AL_LOADING_MEAN and ours["max_rel"] < AL_LOADING_MAX, ours
     assert ours["mean_rel"] < paper["mean_rel"], (ours, paper)
 
@@ -83,21 +92,14 @@ PARTIAL = {r.name: r for r in partial_held_out_runs()}
 PARTIAL_MEAN_MISSES = {"g24_prolate_oblate"}
 
 
-def _partial_errors(name: str) -> tuple[dict, dict]:
-    run = PARTIAL[name]
-    d, f = loading_points(run.overlap, run.force)
-    return force_errors(law_curve(run, d, stiffness_model())["force"], f), force_errors(law_curve(run, d, None)["force"], f)
-
-
 @pytest.mark.parametrize("name", sorted(PARTIAL))
 def test_aluminium_partial_held_out_max_within_bounds_and_better_than_nmc_constants(cli, name):
-    ours, paper = _partial_errors(name)
+    ours, paper = loading_errors(PARTIAL[name])
     assert ours["max_rel"] < AL_LOADING_MAX, ours
     assert ours["mean_rel"] < paper["mean_rel"], (ours, paper)
 
 
-@pytest.mark.parametrize("name", [pytest.param(n, marks=pytest.mark.xfail(strict=True, reason="known miss, documented"))
-                                  if n in PARTIAL_MEAN_MISSES else n for n in sorted(PARTIAL)])
+@pytest.mark.parametrize("name", with_known_misses(sorted(PARTIAL), PARTIAL_MEAN_MISSES))
 def test_aluminium_partial_held_out_mean_within_bounds(cli, name):
-    ours, _ = _partial_errors(name)
+    ours, _ = loading_errors(PARTIAL[name])
     assert ours["mean_rel"] < AL_LOADING_MEAN, ours
