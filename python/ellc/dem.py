@@ -328,17 +328,6 @@ class Contacts:
         return {name: getattr(self, name) for name in self.COLUMNS}
 
 
-def _parse_value(text):
-    if text in ("true", "false"):
-        return text == "true"
-    for kind in (int, float):
-        try:
-            return kind(text)
-        except ValueError:
-            pass
-    return text
-
-
 def read_timeseries(path):
     """timeseries.csv as a dict: column name → numpy array (``phase`` as str, ``step`` as int64)."""
     with open(path, encoding="utf-8") as file:
@@ -602,14 +591,9 @@ class Run:
         return read_timeseries(os.path.join(self.output_directory, "timeseries.csv"))
 
     def summary(self):
-        """The figures of summary.txt for the current state, as a dict (8 significant digits)."""
-        result = {}
-        for line in self._core.summary_text().splitlines():
-            if line.startswith("#") or "=" not in line:
-                continue
-            key, value = (part.strip() for part in line.split("=", 1))
-            result[key] = _parse_value(value)
-        return result
+        """The figures of summary.txt for the current state, as a dict (8 significant digits).
+        summary.txt is a TOML document; this is its table."""
+        return tomllib.loads(self._core.summary_text())
 
     def write_summary(self):
         """Writes summary.txt now (a finished run has written it already); returns its path."""

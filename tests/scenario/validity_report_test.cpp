@@ -3,15 +3,20 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <map>
 #include <sstream>
 #include <string>
 #include <vector>
 
 #include <unistd.h>
+
+#include <toml++/toml.h>
 
 #include "scenario_support.hpp"
 
@@ -135,8 +140,39 @@ TEST(ScenarioValidity, LoadedStateIsTheValidityReportAtTheEndOfTheHold) {
   EXPECT_EQ(keys, expected);
   EXPECT_EQ(values["loaded_state_recorded"], "true");
   EXPECT_EQ(values["validity_threshold"], "0.16");
+  EXPECT_EQ(values["validity_r_hat"], "\"smaller_particle_of_the_pair\"");
   EXPECT_EQ(values["loaded_pair_contacts"], std::to_string(v.pair_contacts));
   EXPECT_NEAR(std::stod(values["loaded_wall_force_beyond_fraction"]), share.wall_force, 1e-7);
+}
+
+// summary.txt is a TOML document, so any TOML reader takes it whole: every line a key of the
+// right type, the words quoted. Also with the non-finite values of a run that ended early
+// (a NaN springback, an infinite ratio), which C++ streams write as nan and inf, as TOML has them.
+TEST(ScenarioValidity, SummaryIsATomlDocument) {
+  RunSummary summary;
+  summary.finished = false;
+  summary.loaded_state_recorded = true;
+  summary.springback_percent = std::numeric_limits<double>::quiet_NaN();
+  summary.loaded_unbalanced_force_ratio = std::numeric_limits<double>::infinity();
+  summary.particles_per_species = {60, 40};
+  std::ostringstream text;
+  write_summary_lines(text, "a.toml", summary);
+  toml::table table;
+  try {
+    table = toml::parse(text.str());
+  } catch (const toml::parse_error& error) {
+    FAIL() << error.description() << " at line " << error.source().begin.line << " of\n" << text.str();
+  }
+  EXPECT_EQ(table["validity_r_hat"].value<std::string>(), "smaller_particle_of_the_pair");
+  EXPECT_EQ(table["finished"].value<bool>(), false);
+  EXPECT_TRUE(table["steps"].is_integer());
+  EXPECT_TRUE(std::isnan(table["springback_percent"].value<double>().value_or(0.0)));
+  EXPECT_TRUE(std::isinf(table["loaded_unbalanced_force_ratio"].value<double>().value_or(0.0)));
+  EXPECT_EQ(table["species_1_particles"].value<std::int64_t>(), 40);
+  std::size_t lines = 0;
+  std::istringstream rows(text.str());
+  for (std::string line; std::getline(rows, line);) lines += !line.empty() && line[0] != '#' ? 1U : 0U;
+  EXPECT_EQ(table.size(), lines);  // nothing dropped or merged
 }
 
 // A summary with little force beyond the threshold gives no warning; more than half of the pair

@@ -237,7 +237,7 @@ void write_summary_lines(std::ostream& out, const std::string& scenario_source, 
       << "loaded_state_recorded = " << (s.loaded_state_recorded ? "true" : "false")
       << "\nloaded_unbalanced_force_ratio = " << s.loaded_unbalanced_force_ratio
       << "\nloaded_kinetic_over_elastic = " << s.loaded_kinetic_over_elastic << "\nvalidity_threshold = " << v.threshold
-      << "\nvalidity_r_hat = smaller_particle_of_the_pair"
+      << "\nvalidity_r_hat = \"smaller_particle_of_the_pair\""
       << "\nloaded_pair_contacts = " << v.pair_contacts
       << "\nloaded_pair_contacts_beyond_fraction = " << share.pair_contacts
       << "\nloaded_pair_force_beyond_fraction = " << share.pair_force << "\nloaded_wall_contacts = " << v.wall_contacts
