@@ -25,6 +25,7 @@
 #include <fstream>
 #include <memory>
 
+#include "ellc/engine/broad_phase.hpp"
 #include "ellc/engine/simulation.hpp"
 #include "ellc/engine/time_step.hpp"
 #include "ellc/scenario/packing.hpp"
@@ -238,6 +239,25 @@ void BM_dem_ratio_ellipsoid_over_sphere(benchmark::State& state) {
   state.counters["ratio"] = sphere_rate > 0.0 ? ellipsoid_rate / sphere_rate : 0.0;
 }
 
+// The broad phase alone: one neighbour-list build (find_candidate_pairs, one thread) of the dense
+// packing, as ellipsoids and as spheres of the same volume, with the engine's skin. ns per particle.
+void broad_phase(benchmark::State& state, bool spheres) {
+  const auto simulation = dense(spheres);
+  const ParticleSet& particles = simulation->particles();
+  std::vector<PairSlot> pairs;
+  for (auto _ : state) {
+    find_candidate_pairs(particles, loose_packing().box, simulation->skin(), false, pairs);
+    benchmark::DoNotOptimize(pairs.data());
+  }
+  state.counters["ns_per_particle"] =
+      benchmark::Counter(1e-9 * static_cast<double>(particles.size()),
+                         benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
+  state.counters["candidate_pairs_per_particle"] =
+      static_cast<double>(pairs.size()) / static_cast<double>(particles.size());
+}
+void BM_broad_phase_ellipsoids(benchmark::State& state) { broad_phase(state, false); }
+void BM_broad_phase_spheres(benchmark::State& state) { broad_phase(state, true); }
+
 std::int64_t timed_steps() {
   if (const char* text = std::getenv("ELLC_BENCH_DEM_STEPS")) return std::strtol(text, nullptr, 10);
   return 300;
@@ -246,6 +266,8 @@ std::int64_t timed_steps() {
 BENCHMARK(BM_dem_ellipsoids_becker_kamlah)->Unit(benchmark::kMillisecond)->Iterations(timed_steps())->UseRealTime();
 BENCHMARK(BM_dem_spheres_hertz)->Unit(benchmark::kMillisecond)->Iterations(timed_steps())->UseRealTime();
 BENCHMARK(BM_dem_ratio_ellipsoid_over_sphere)->Iterations(1);
+BENCHMARK(BM_broad_phase_ellipsoids)->Unit(benchmark::kMillisecond)->MinTime(2.0);
+BENCHMARK(BM_broad_phase_spheres)->Unit(benchmark::kMillisecond)->MinTime(2.0);
 BENCHMARK(BM_z_order_dem_ellipsoids_becker_kamlah)
     ->Unit(benchmark::kMillisecond)
     ->Iterations(timed_steps())

@@ -79,19 +79,28 @@ CellGrid make_grid(const ParticleSet& particles, const Box& box, double cell_siz
 // through an open-addressing hash table (linear probing, at most half full).
 class OccupiedCells {
  public:
-  OccupiedCells(const std::vector<std::uint64_t>& key_of_slot, std::vector<std::uint32_t>& sorted) {
+  // `sorted`: the slots by cell key, and by id within a cell.
+  OccupiedCells(const std::vector<std::uint64_t>& key_of_slot, const std::vector<std::uint32_t>& id,
+                std::vector<std::uint32_t>& sorted) {
     const std::size_t count = key_of_slot.size();
-    std::vector<std::pair<std::uint64_t, std::uint32_t>> by_cell(count);
+    struct Entry {
+      std::uint64_t key;
+      std::uint32_t id, slot;
+    };
+    std::vector<Entry> by_cell(count);
     for (std::size_t slot = 0; slot < count; ++slot)
-      by_cell[slot] = {key_of_slot[slot], static_cast<std::uint32_t>(slot)};
-    std::sort(by_cell.begin(), by_cell.end());
+      by_cell[slot] = {key_of_slot[slot], id[slot], static_cast<std::uint32_t>(slot)};
+    std::sort(by_cell.begin(), by_cell.end(),
+              [](const Entry& l, const Entry& r) { return l.key != r.key ? l.key < r.key : l.id < r.id; });
     sorted.resize(count);
+    cell_of_slot_.resize(count);
     for (std::size_t k = 0; k < count; ++k) {
-      sorted[k] = by_cell[k].second;
-      if (k == 0 || by_cell[k].first != by_cell[k - 1].first) {
-        keys_.push_back(by_cell[k].first);
+      sorted[k] = by_cell[k].slot;
+      if (k == 0 || by_cell[k].key != by_cell[k - 1].key) {
+        keys_.push_back(by_cell[k].key);
         begin_.push_back(k);
       }
+      cell_of_slot_[by_cell[k].slot] = static_cast<std::uint32_t>(keys_.size() - 1);
     }
     begin_.push_back(count);
     std::size_t capacity = 16;
@@ -108,6 +117,9 @@ class OccupiedCells {
       table_[at] = cell;
     }
   }
+  [[nodiscard]] std::size_t size() const noexcept { return keys_.size(); }
+  [[nodiscard]] std::uint64_t key(std::size_t cell) const noexcept { return keys_[cell]; }
+  [[nodiscard]] std::uint32_t cell_of_slot(std::size_t slot) const noexcept { return cell_of_slot_[slot]; }
   // The run [first, last) of the sorted slots in the cell with this key (empty if unoccupied).
   [[nodiscard]] std::pair<std::size_t, std::size_t> run(std::uint64_t key) const noexcept {
     for (std::size_t at = bucket(key); table_[at] != kEmpty; at = (at + 1) & mask_)
@@ -122,6 +134,7 @@ class OccupiedCells {
   }
   std::vector<std::uint64_t> keys_;
   std::vector<std::size_t> begin_;
+  std::vector<std::uint32_t> cell_of_slot_;  // index into keys_ of each particle slot
   std::vector<std::size_t> table_;
   std::size_t mask_ = 0;
   unsigned shift_ = 60;  // 64 − log2(capacity)
@@ -142,6 +155,44 @@ int neighbour_cells(std::int64_t cell, std::int64_t n, bool periodic, std::int64
     if (std::find(out, out + count, other) == out + count) out[count++] = other;
   }
   return count;
+}
+
+// For every occupied cell, the runs of the cell-sorted slots in the 3³ cells around it, looked up
+// once per cell instead of once per particle (a cell holds ~10 particles of a dense packing).
+// Partners are sorted by key afterwards, so the order in which the runs are visited does not
+// change the list.
+struct NeighbourRuns {
+  std::vector<std::uint32_t> begin;                           // per cell, into runs; size cells + 1
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> runs;  // [first, last) of the sorted slots
+};
+
+NeighbourRuns neighbour_runs(const OccupiedCells& cells, const CellGrid& grid) {
+  constexpr std::uint64_t kAxisMask = (std::uint64_t{1} << 21U) - 1U;
+  NeighbourRuns result;
+  result.begin.reserve(cells.size() + 1);
+  result.runs.reserve(9 * cells.size());
+  std::array<std::pair<std::uint32_t, std::uint32_t>, 27> found{};
+  for (std::size_t cell = 0; cell < cells.size(); ++cell) {
+    result.begin.push_back(static_cast<std::uint32_t>(result.runs.size()));
+    const std::uint64_t key = cells.key(cell);
+    const auto ix = static_cast<std::int64_t>(key & kAxisMask);
+    const auto iy = static_cast<std::int64_t>((key >> 21U) & kAxisMask);
+    const auto iz = static_cast<std::int64_t>(key >> 42U);
+    std::int64_t nxs[3], nys[3], nzs[3];
+    const int cx = neighbour_cells(ix, grid.nx, true, nxs);
+    const int cy = neighbour_cells(iy, grid.ny, true, nys);
+    const int cz = neighbour_cells(iz, grid.nz, false, nzs);
+    std::size_t n = 0;
+    for (int kz = 0; kz < cz; ++kz)
+      for (int ky = 0; ky < cy; ++ky)
+        for (int kx = 0; kx < cx; ++kx) {
+          const auto [first, last] = cells.run(CellGrid::key(nxs[kx], nys[ky], nzs[kz]));
+          if (first < last) found[n++] = {static_cast<std::uint32_t>(first), static_cast<std::uint32_t>(last)};
+        }
+    result.runs.insert(result.runs.end(), found.begin(), found.begin() + static_cast<std::ptrdiff_t>(n));
+  }
+  result.begin.push_back(static_cast<std::uint32_t>(result.runs.size()));
+  return result;
 }
 
 // The periodic image of a separation closest to zero (|d| ≤ L/2 for |d| < 3L/2).
@@ -181,14 +232,14 @@ void find_candidate_pairs(const ParticleSet& particles, const Box& box, double s
   const CellGrid grid = make_grid(particles, box, 2.0 * max_radius + skin);
 
   // The slots sorted by cell, and the occupied cells.
-  std::vector<std::array<std::int64_t, 3>> cell_of(count);
   std::vector<std::uint64_t> key_of_slot(count);
   for (std::size_t slot = 0; slot < count; ++slot) {
-    cell_of[slot] = grid.cell_of(particles.position[slot]);
-    key_of_slot[slot] = CellGrid::key(cell_of[slot][0], cell_of[slot][1], cell_of[slot][2]);
+    const auto [ix, iy, iz] = grid.cell_of(particles.position[slot]);
+    key_of_slot[slot] = CellGrid::key(ix, iy, iz);
   }
   std::vector<std::uint32_t> sorted;
-  const OccupiedCells cells(key_of_slot, sorted);
+  const OccupiedCells cells(key_of_slot, particles.id, sorted);
+  const NeighbourRuns around = neighbour_runs(cells, grid);
 
   // The list must come out sorted by key (id_i, id_j). Visiting the particles in id order and
   // sorting each one's few partners by id gives that order directly: contiguous blocks of the
@@ -234,26 +285,20 @@ void find_candidate_pairs(const ParticleSet& particles, const Box& box, double s
       const Eigen::Vector3d centre = particles.position[p];
       const double radius_p = particles.bounding_radius[p];
       const std::uint32_t id_p = id[p];
-      const auto [ix, iy, iz] = cell_of[p];
-      std::int64_t nxs[3], nys[3], nzs[3];
-      const int cx = neighbour_cells(ix, grid.nx, true, nxs);
-      const int cy = neighbour_cells(iy, grid.ny, true, nys);
-      const int cz = neighbour_cells(iz, grid.nz, false, nzs);
+      const std::uint32_t cell = cells.cell_of_slot(p);
       const std::size_t partners_begin = out.size();
-      for (int kz = 0; kz < cz; ++kz)
-        for (int ky = 0; ky < cy; ++ky)
-          for (int kx = 0; kx < cx; ++kx) {
-            const auto [first_in_cell, last_in_cell] = cells.run(CellGrid::key(nxs[kx], nys[ky], nzs[kz]));
-            for (std::size_t b = first_in_cell; b < last_in_cell; ++b) {
-              const Sphere& q = in_cell_order[b];
-              if (q.id <= id_p) continue;  // each unordered pair once, from its smaller id
-              const Eigen::Vector3d raw = q.centre - centre;
-              const Eigen::Vector3d d(minimum_image(raw.x(), box.lx), minimum_image(raw.y(), box.ly), raw.z());
-              const double reach = radius_p + q.radius + skin;
-              if (d.squaredNorm() >= reach * reach) continue;
-              out.push_back({pair_key(id_p, q.id), p, q.slot, d - raw});  // shift: image offset of q seen from p
-            }
-          }
+      for (std::uint32_t r = around.begin[cell]; r < around.begin[cell + 1]; ++r) {
+        // Each unordered pair once, from its smaller id: a run is sorted by id, so its partners
+        // of larger id are its tail, walked from the end.
+        for (std::size_t b = around.runs[r].second; b > around.runs[r].first && in_cell_order[b - 1].id > id_p; --b) {
+          const Sphere& q = in_cell_order[b - 1];
+          const Eigen::Vector3d raw = q.centre - centre;
+          const Eigen::Vector3d d(minimum_image(raw.x(), box.lx), minimum_image(raw.y(), box.ly), raw.z());
+          const double reach = radius_p + q.radius + skin;
+          if (d.squaredNorm() >= reach * reach) continue;
+          out.push_back({pair_key(id_p, q.id), p, q.slot, d - raw});  // shift: image offset of q seen from p
+        }
+      }
       std::sort(out.begin() + static_cast<std::ptrdiff_t>(partners_begin), out.end(),
                 [](const Candidate& l, const Candidate& r) { return l.key < r.key; });
     }

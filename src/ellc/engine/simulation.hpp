@@ -112,6 +112,7 @@ class Simulation {
   [[nodiscard]] double time() const noexcept { return time_; }
   [[nodiscard]] const std::vector<PairSlot>& pairs() const noexcept { return pairs_; }
   [[nodiscard]] std::uint64_t neighbour_rebuilds() const noexcept { return rebuilds_; }
+  [[nodiscard]] double skin() const noexcept { return skin_; }  // the neighbour list's, µm
   // Threads the next step runs on (settings().adaptive_threads; a diagnostic).
   [[nodiscard]] int thread_count() const noexcept { return threads_; }
   // Candidate pairs currently proven apart, whose test the next step skips (a diagnostic).
