@@ -23,6 +23,7 @@ def parser() -> argparse.ArgumentParser:
     p.add_argument("--out", default="data/fea")
     p.add_argument("--work", default="out/fea/work")
     p.add_argument("--manifest", default="data/fea/manifest.json")
+    p.add_argument("--contact-slope", help="passed to fea/run_case (default: run_case's)")
     p.add_argument("--force", action="store_true", help="rerun cases whose CSV exists")
     p.add_argument("--reparse", action="store_true", help="collect existing ccx output again, no runs")
     return p
@@ -41,6 +42,7 @@ def main(argv: list[str] | None = None) -> int:
         one += ["--points", str(args.points)] if args.points else []
         one += ["--elastic"] if args.elastic else []
         one += ["--reparse"] if args.reparse else []
+        one += ["--contact-slope", args.contact_slope] if args.contact_slope else []
         start = time.monotonic()
         print(f"run_grid: {name}: start {time.strftime('%H:%M:%S')}", flush=True)
         code = run_one(one)

@@ -16,7 +16,10 @@ from .case import Case
 from .mesh import PairMesh
 from .surface import contact_faces, surface_line
 
-CONTACT_SLOPE = 1.0e7           # MPa/um, pressure per unit overclosure
+# MPa/um, pressure per unit overclosure: the default, and every run started before 2026-12-03 09:45 UTC. A
+# sharp aluminium contact (c_Y ~ 0.01 um) needs a stiffer one (`--contact-slope`, fea/README.md,
+# "Contact penalty"): the penalty must stay much stiffer than the Hertz contact itself, 2 E* c.
+CONTACT_SLOPE = 1.0e7
 CONTACT_CONTROLS = "0.05,0.1,100,60"
 # surface nodes on the symmetry lines: body I/J, along y (z = 0) and along z (y = 0)
 LINE_SETS = ("LYI", "LYJ", "LZI", "LZJ")
@@ -83,8 +86,9 @@ def contact_reach(case: Case) -> float:
     return 1.5 * max(case.waypoints) + 0.02 * min(case.body_i.a, case.body_j.a)
 
 
-def write_deck(path: str, case: Case, mesh: PairMesh, elastic_only: bool = False) -> dict:
-    """Write the deck; return a summary (node/element/face counts) for the manifest."""
+def write_deck(path: str, case: Case, mesh: PairMesh, elastic_only: bool = False,
+               contact_slope: float = CONTACT_SLOPE) -> dict:
+    """Write the deck; return a summary (node/element/face counts, the penalty slope) for the manifest."""
     n_i = len(mesh.body_i.tets)
     tol = 1e-6 * float(np.abs(mesh.nodes).max())
     reach = contact_reach(case)
@@ -106,11 +110,11 @@ def write_deck(path: str, case: Case, mesh: PairMesh, elastic_only: bool = False
         _surface(fh, "SURFJ", faces_j)
         _material(fh, case, elastic_only)
         fh.write(f"*SURFACE INTERACTION, NAME=FRICTIONLESS\n"
-                 f"*SURFACE BEHAVIOR, PRESSURE-OVERCLOSURE=LINEAR\n{CONTACT_SLOPE:.6g}\n")
+                 f"*SURFACE BEHAVIOR, PRESSURE-OVERCLOSURE=LINEAR\n{contact_slope:.6g}\n")
         fh.write("*CONTACT PAIR, INTERACTION=FRICTIONLESS, TYPE=SURFACE TO SURFACE\nSURFJ, SURFI\n")
         fh.write("*BOUNDARY\nSY, 2, 2, 0.0\nSZ, 3, 3, 0.0\n")
         for target in case.waypoints[1:]:
             _step(fh, target, case.points_per_segment)
     n_nodes = int(len(np.unique(np.concatenate([mesh.body_i.tets.ravel(), mesh.body_j.tets.ravel()]))))
     return {"nodes": n_nodes, "elements": n_i + len(mesh.body_j.tets),
-            "contact_faces": [len(faces_i), len(faces_j)]}
+            "contact_faces": [len(faces_i), len(faces_j)], "contact_slope": contact_slope}

@@ -9,7 +9,7 @@ import time
 from .case import Case
 from .curve import rows, write_csv
 from .datfile import parse_dat
-from .deck import write_deck
+from .deck import CONTACT_SLOPE, write_deck
 from .manifest import read_manifest, update_manifest
 from .mesh import build_mesh
 from .runner import ccx_version, read_log, run_ccx
@@ -43,7 +43,7 @@ def _run_info(manifest: str, name: str, seconds: float, command: str, reparse: b
 
 def run_case(case: Case, level: str, out_dir: str, work_dir: str, ccx: str, *,
              elastic_only: bool = False, command: str = "", manifest: str | None = None,
-             reparse: bool = False) -> Outcome:
+             reparse: bool = False, contact_slope: float = CONTACT_SLOPE) -> Outcome:
     """Mesh, write the deck, run ccx and collect.  reparse=True skips the ccx run and collects
     the existing output in work_dir again (the mesh is rebuilt: gmsh numbering is deterministic)."""
     os.makedirs(out_dir, exist_ok=True)
@@ -51,7 +51,7 @@ def run_case(case: Case, level: str, out_dir: str, work_dir: str, ccx: str, *,
     t0 = time.monotonic()
     mesh = build_mesh(case.body_i, case.body_j, level)
     deck = os.path.join(work_dir, f"{case.name}.inp" if not reparse else f"{case.name}.reparse.inp")
-    summary = write_deck(deck, case, mesh, elastic_only)
+    summary = write_deck(deck, case, mesh, elastic_only, contact_slope)
     mesh_seconds = time.monotonic() - t0
     result = read_log(work_dir, case.name) if reparse else run_ccx(ccx, work_dir, case.name)
     table = rows(parse_dat(os.path.join(work_dir, f"{case.name}.dat")), mesh.nodes)

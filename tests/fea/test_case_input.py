@@ -46,3 +46,29 @@ def test_cli_refuses_with_exit_code_2(tmp_path, repo):
                           capture_output=True, text=True)
     assert proc.returncode == 2
     assert "refused" in proc.stderr and "1:4" in proc.stderr
+
+
+@pytest.mark.parametrize("slope", ["0", "-1e7", "nan", "inf"])
+def test_cli_refuses_a_contact_slope_that_is_not_a_positive_number(tmp_path, repo, slope):
+    path = tmp_path / "ok.toml"
+    path.write_text("[material]\nyoungs_modulus = 1.0\npoisson_ratio = 0.25\nyield_stress = 1.0\n"
+                    "[body_I]\nsemi_axes = [1.0, 1.0, 1.0]\n[body_J]\nsemi_axes = [1.0, 1.0, 1.0]\n"
+                    "[protocol]\nwaypoints = [0.0, 0.1]\n")
+    proc = subprocess.run([f"{repo}/fea/run_case", str(path), "--out", str(tmp_path), f"--contact-slope={slope}"],
+                          capture_output=True, text=True)
+    assert proc.returncode == 2
+    assert "--contact-slope" in proc.stderr and "positive, finite" in proc.stderr
+
+
+def test_deck_carries_the_contact_slope_and_reports_it(tmp_path, needs_fe_tools):
+    from ellc_fea.deck import CONTACT_SLOPE, write_deck
+    from ellc_fea.mesh import build_mesh
+    case = parse_case(_case({"semi_axes": [5, 5, 5]}), "x")
+    mesh = build_mesh(case.body_i, case.body_j, "coarse")
+    for slope in (None, 7.0e7):
+        deck = tmp_path / "x.inp"
+        summary = write_deck(str(deck), case, mesh) if slope is None else write_deck(str(deck), case, mesh,
+                                                                                      contact_slope=slope)
+        lines = deck.read_text().splitlines()
+        written = float(lines[lines.index("*SURFACE BEHAVIOR, PRESSURE-OVERCLOSURE=LINEAR") + 1])
+        assert written == summary["contact_slope"] == (CONTACT_SLOPE if slope is None else slope)
