@@ -50,6 +50,7 @@ run_asan() {
   long_runs+='LoadingProtocol\.RampedPlateServoHoldAndAReadingAtEquilibrium|EngineSettling\.DepositComesToRest|'
   long_runs+='EngineEnergyBalance\.WallWorkEqualsStoredPlusDissipatedEnergy|ScenarioValidity\.LoadedStateIsTheValidity|'
   long_runs+='Ensemble\.AFailingMemberDoesNotStopTheOthers|ScenarioEnergyBalance\.PlateWorkIsStored|'
+  long_runs+='DemCompareCli\.DuctileExampleIsDominatedByPlasticity|'
   long_runs+='RandomPairs\.MillionPairsNoNanNoSilentFailure'
   [[ ${ELLC_SANITIZE_ALL:-0} == 1 ]] || exclude="$exclude|^($long_runs)"
   local listing suites
