@@ -222,6 +222,9 @@ def plot_holdout(res: dict) -> str | None:
                 ax.plot(run.overlap / contact.delta_y, e["force"] / contact.f_py, style, lw=1.2,
                         label=f"law, {label}: mean {100 * e['loading_mean']:.1f} %")
         ax.set(title=f"{name} ({entry['role']})", xlabel="δ / δ_Y", ylabel="F / F_pY", xscale="log", yscale="log")
+        # The unloading ends near F = 0, which on a log axis would squash the loading curve.
+        peak = int(np.argmax(run.overlap))
+        ax.set_ylim(bottom=0.3 * float(np.min(run.force[:peak + 1][run.force[:peak + 1] > 0])) / contact.f_py)
         ax.legend(fontsize=7)
     return save(fig, "aluminium_holdout.png")
 
