@@ -79,16 +79,9 @@ def test_shipped_model_is_the_joint_fit_without_the_held_out_cases(cli):
 
 
 PARTIAL = {r.name: r for r in partial_held_out_runs()}
-# g22 (crossed, stopped at 10 delta_Y, five loading points): the joint law is 5.4 % off on average
-# (max 9.8 %) and the paper's constants 3.1 %: below ~10 delta_Y aluminium's transition is still
-# NMC's, and at 1.2 delta_Y, where every law is Hertz, the FE is already 10 % below it (a contact
-# spanning few elements, as where the run stalled). docs/validation.md Sec. 6. Known miss: strict,
-# so it fails once the miss is gone.
-PARTIAL_MISSES = {"g22_crossed_moderate"}
 
 
-@pytest.mark.parametrize("name", [pytest.param(n, marks=pytest.mark.xfail(strict=True, reason="known miss, documented"))
-                                  if n in PARTIAL_MISSES else n for n in sorted(PARTIAL)])
+@pytest.mark.parametrize("name", sorted(PARTIAL))
 def test_aluminium_partial_held_out_within_bounds_and_better_than_nmc_constants(cli, name):
     ours, paper = loading_errors(PARTIAL[name])
     assert ours["mean_rel"] < AL_LOADING_MEAN and ours["max_rel"] < AL_LOADING_MAX, ours
