@@ -34,6 +34,12 @@ struct CellGrid {
     return (static_cast<std::uint64_t>(iz) << 42U) | (static_cast<std::uint64_t>(iy) << 21U) |
            static_cast<std::uint64_t>(ix);
   }
+  // The cell coordinates of a key (key's inverse).
+  [[nodiscard]] static std::array<std::int64_t, 3> coordinates(std::uint64_t key) noexcept {
+    constexpr std::uint64_t kAxisMask = (std::uint64_t{1} << 21U) - 1U;
+    return {static_cast<std::int64_t>(key & kAxisMask), static_cast<std::int64_t>((key >> 21U) & kAxisMask),
+            static_cast<std::int64_t>(key >> 42U)};
+  }
   [[nodiscard]] static std::int64_t clamp_cell(double coordinate, double origin, double size, std::int64_t n) noexcept {
     const double cell = std::floor((coordinate - origin) / size);
     if (!(cell > 0.0)) return 0;  // also NaN
@@ -167,29 +173,23 @@ struct NeighbourRuns {
 };
 
 NeighbourRuns neighbour_runs(const OccupiedCells& cells, const CellGrid& grid) {
-  constexpr std::uint64_t kAxisMask = (std::uint64_t{1} << 21U) - 1U;
   NeighbourRuns result;
   result.begin.reserve(cells.size() + 1);
   result.runs.reserve(9 * cells.size());
-  std::array<std::pair<std::uint32_t, std::uint32_t>, 27> found{};
   for (std::size_t cell = 0; cell < cells.size(); ++cell) {
     result.begin.push_back(static_cast<std::uint32_t>(result.runs.size()));
-    const std::uint64_t key = cells.key(cell);
-    const auto ix = static_cast<std::int64_t>(key & kAxisMask);
-    const auto iy = static_cast<std::int64_t>((key >> 21U) & kAxisMask);
-    const auto iz = static_cast<std::int64_t>(key >> 42U);
+    const auto [ix, iy, iz] = CellGrid::coordinates(cells.key(cell));
     std::int64_t nxs[3], nys[3], nzs[3];
     const int cx = neighbour_cells(ix, grid.nx, true, nxs);
     const int cy = neighbour_cells(iy, grid.ny, true, nys);
     const int cz = neighbour_cells(iz, grid.nz, false, nzs);
-    std::size_t n = 0;
     for (int kz = 0; kz < cz; ++kz)
       for (int ky = 0; ky < cy; ++ky)
         for (int kx = 0; kx < cx; ++kx) {
           const auto [first, last] = cells.run(CellGrid::key(nxs[kx], nys[ky], nzs[kz]));
-          if (first < last) found[n++] = {static_cast<std::uint32_t>(first), static_cast<std::uint32_t>(last)};
+          if (first < last)
+            result.runs.emplace_back(static_cast<std::uint32_t>(first), static_cast<std::uint32_t>(last));
         }
-    result.runs.insert(result.runs.end(), found.begin(), found.begin() + static_cast<std::ptrdiff_t>(n));
   }
   result.begin.push_back(static_cast<std::uint32_t>(result.runs.size()));
   return result;
