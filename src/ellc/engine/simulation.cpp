@@ -270,14 +270,23 @@ std::size_t Simulation::kick_and_check(double half_dt) noexcept {
 void Simulation::compute_forces() {
   const std::size_t count = particles_.size();
   const std::size_t pair_count = pairs_.size();
-#pragma omp parallel num_threads(threads_) if (parallel())
+  if (!parallel()) {
+    // One thread: each pair adds to its particles as it is evaluated. The walls go first and the
+    // pairs in list order, which is the order accumulate() sums in, so the bits are the same as
+    // with threads; it saves reading every result back through the per-particle index.
+    for (std::size_t slot = 0; slot < count; ++slot) evaluate_walls_and_reset(slot);
+    for (std::size_t index = 0; index < pair_count; ++index) evaluate_pair(index, true);
+    accumulate(false);
+    return;
+  }
+#pragma omp parallel num_threads(threads_)
   {
 #pragma omp for schedule(static) nowait
     for (std::size_t slot = 0; slot < count; ++slot) evaluate_walls_and_reset(slot);
 #pragma omp for schedule(dynamic, 256)
-    for (std::size_t index = 0; index < pair_count; ++index) evaluate_pair(index);
+    for (std::size_t index = 0; index < pair_count; ++index) evaluate_pair(index, false);
   }
-  accumulate();
+  accumulate(true);
 }
 
 // Wall contacts of one particle; also starts the particle's force and torque sums with them.
@@ -333,7 +342,7 @@ void Simulation::evaluate_walls_and_reset(std::size_t slot) {
   p.torque[slot] = torque;
 }
 
-void Simulation::evaluate_pair(std::size_t index) {
+void Simulation::evaluate_pair(std::size_t index, bool add_to_particles) {
   auto& p = particles_;
   PairSlot& pair = pairs_[index];
   pair_reported_[index] = 0;
@@ -383,21 +392,29 @@ void Simulation::evaluate_pair(std::size_t index) {
   pair_reported_[index] = 1;
   result.contact = true;
   result.regime = solution.law.regime;
-  if (solution.law.regime == Regime::separated) return;  // overlapping below δ_p: no force
-  const PairForces forces =
-      pair_forces(solution, p.position[i], BodyMotion{p.velocity[i], omega_world_[i], p.mass[i]}, centre_j,
-                  BodyMotion{p.velocity[j], omega_world_[j], p.mass[j]}, pair_context(i, j), settings_.dt, history);
-  result.force_on_j = forces.contact.on_j;
-  result.torque_i = forces.torque_on_i;
-  result.torque_j = forces.torque_on_j;
-  result.damping_dissipation = forces.contact.damping_dissipation;
-  result.friction_dissipation = forces.contact.friction_dissipation;
+  if (solution.law.regime != Regime::separated) {  // else overlapping below δ_p: no force
+    const PairForces forces =
+        pair_forces(solution, p.position[i], BodyMotion{p.velocity[i], omega_world_[i], p.mass[i]}, centre_j,
+                    BodyMotion{p.velocity[j], omega_world_[j], p.mass[j]}, pair_context(i, j), settings_.dt, history);
+    result.force_on_j = forces.contact.on_j;
+    result.torque_i = forces.torque_on_i;
+    result.torque_j = forces.torque_on_j;
+    result.damping_dissipation = forces.contact.damping_dissipation;
+    result.friction_dissipation = forces.contact.friction_dissipation;
+  }
+  if (add_to_particles) {  // the operations of accumulate(), zeros included (they can turn -0 into +0)
+    p.force[i] -= result.force_on_j;
+    p.torque[i] += result.torque_i;
+    p.force[j] += result.force_on_j;
+    p.torque[j] += result.torque_j;
+  }
 }
 
 // Where contributions meet. Each particle adds its pair forces to its wall forces in pair-list
 // order, the order a serial sweep over the list would use, so the sums are the same bits for any
-// thread count. Scalar totals: fixed chunks of the list, each summed in order, then in order.
-void Simulation::accumulate() {
+// thread count (without pair_forces the pairs have added themselves in that sweep). Scalar
+// totals: fixed chunks of the list, each summed in order, then in order.
+void Simulation::accumulate(bool pair_forces) {
   auto& p = particles_;
   const std::size_t count = p.size();
   for (auto& wall : walls_) wall.force.setZero();
@@ -415,8 +432,8 @@ void Simulation::accumulate() {
     }
   }
   const bool in_parallel = parallel();
-#pragma omp parallel for schedule(static) num_threads(threads_) if (in_parallel)
-  for (std::size_t slot = 0; slot < count; ++slot) {
+#pragma omp parallel for schedule(static) num_threads(threads_) if (in_parallel && pair_forces)
+  for (std::size_t slot = 0; slot < (pair_forces ? count : 0); ++slot) {
     Eigen::Vector3d force = p.force[slot];
     Eigen::Vector3d torque = p.torque[slot];
     for (std::uint32_t k = pairs_of_particle_start_[slot]; k < pairs_of_particle_start_[slot + 1]; ++k) {

@@ -196,9 +196,9 @@ class Simulation {
   [[nodiscard]] std::size_t kick_and_check(double half_dt) noexcept;
   void kick_particle(std::size_t slot, double half_dt, const Eigen::Vector3d& gravity, double drag) noexcept;
   void compute_forces();
-  void evaluate_pair(std::size_t index);
+  void evaluate_pair(std::size_t index, bool add_to_particles);
   void evaluate_walls_and_reset(std::size_t slot);
-  void accumulate();
+  void accumulate(bool pair_forces);
   [[noreturn]] void report_runaway(std::size_t first_bad) const;
   void choose_threads() noexcept;
   [[nodiscard]] bool parallel() const noexcept {
