@@ -144,7 +144,7 @@ def main():
             summary = microstructure.read_summary(folder)
             with open(folder / "tortuosity.csv", newline="") as handle:
                 solve = next(csv.DictReader(line for line in handle if not line.startswith("#")))
-            rows.append({"state": state, "voxel_size_um": spacing, "grid": summary["grid"],
+            rows.append({"state": state, "voxel_size_um": spacing, "grid": " x ".join(map(str, summary["grid"])),
                          "porosity_voxels": summary["porosity_voxels"], "porosity_analytic": summary["porosity_analytic"],
                          "tortuosity_z": summary["tortuosity_z"], "iterations": solve["iterations"],
                          "seconds": solve["seconds"]})

@@ -166,29 +166,12 @@ void bind_microstructure(py::module_& parent) {
           if (!directory.empty()) microstructure::write_analysis(directory, packing, report);
           microstructure::write_analysis_summary(summary, report);
         }
-        py::dict values;
-        std::istringstream lines(summary.str());
-        for (std::string line; std::getline(lines, line);) {
-          const auto equals = line.find(" = ");
-          if (equals == std::string::npos) continue;
-          const std::string key = line.substr(0, equals);
-          const std::string text = line.substr(equals + 3);
-          try {
-            std::size_t used = 0;
-            const double value = text == "inf" ? HUGE_VAL : std::stod(text, &used);
-            if (text == "inf" || used == text.size()) {
-              values[py::str(key)] = value;
-              continue;
-            }
-          } catch (const std::exception&) {
-          }
-          values[py::str(key)] = text;
-        }
-        return values;
+        return summary.str();  // a TOML document: ellc.microstructure.analyse reads it with tomllib
       },
       py::arg("packing"), py::arg("directory") = "", py::arg("voxels_per_semi_axis") = 5.0, py::arg("spacing") = 0.0,
       py::arg("memory_limit_gib") = 4.0, py::arg("coarse_factor") = 2.0,
-      "The analysis of `ellc analyse`; writes its files into `directory` unless empty; returns the summary dict.");
+      "The analysis of `ellc analyse`; writes its files into `directory` unless empty; returns analysis.txt's TOML "
+      "text.");
   module.def("fit_bruggeman_exponent", &microstructure::fit_bruggeman_exponent, py::arg("porosity"),
              py::arg("tortuosity"), "alpha of D_eff/D = porosity^alpha (tau = porosity^(1 - alpha)); NaN if none.");
 }

@@ -19,6 +19,7 @@ The figures below need only numpy and matplotlib and read the CSV tables of an a
 import csv
 import math
 import os
+import tomllib
 
 try:
     from ellc._ellc import microstructure as _core
@@ -47,18 +48,10 @@ def _read_table(path):
 
 
 def read_summary(directory):
-    """analysis.txt of an analysis folder as a dict of key -> float (or str)."""
-    values = {}
-    with open(os.path.join(directory, "analysis.txt")) as handle:
-        for line in handle:
-            if line.startswith("#") or "=" not in line:
-                continue
-            key, value = (part.strip() for part in line.split("=", 1))
-            try:
-                values[key] = float(value)
-            except ValueError:
-                values[key] = value
-    return values
+    """analysis.txt of an analysis folder (a TOML document) as a dict: numbers, the grids as
+    [nx, ny, nz], notes as strings."""
+    with open(os.path.join(directory, "analysis.txt"), "rb") as handle:
+        return tomllib.load(handle)
 
 
 def profile_figure(profile, title=None):
@@ -197,4 +190,4 @@ def analyse(packing, directory=None, **options):
     coarse_factor. Returns the summary as a dict (the keys of analysis.txt)."""
     if _core is None:
         raise ImportError("ellc.microstructure.analyse needs the compiled module ellc._ellc")
-    return _core.analyse(packing, directory or "", **options)
+    return tomllib.loads(_core.analyse(packing, directory or "", **options))

@@ -7,11 +7,15 @@
 
 #include <unistd.h>
 
+#include <cmath>
+#include <cstdint>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
 #include <map>
 #include <sstream>
+
+#include <toml++/toml.h>
 
 #include "ellc/microstructure/packing.hpp"
 #include "microstructure/microstructure_support.hpp"
@@ -39,6 +43,23 @@ std::map<std::string, std::string> read_keys(const fs::path& path) {
   return keys;
 }
 
+// analysis.txt as TOML; fails the test (naming the line) if it is not a TOML document, and
+// checks that every key line became one key (nothing dropped or merged).
+toml::table read_toml(const fs::path& path) {
+  toml::table table;
+  try {
+    table = toml::parse_file(path.string());
+  } catch (const toml::parse_error& error) {
+    ADD_FAILURE() << path << " is not TOML: " << error.description() << " at line " << error.source().begin.line;
+    return table;
+  }
+  std::size_t lines = 0;
+  std::ifstream in(path);
+  for (std::string line; std::getline(in, line);) lines += !line.empty() && line[0] != '#' ? 1U : 0U;
+  EXPECT_EQ(table.size(), lines) << path;
+  return table;
+}
+
 TEST(AnalyseCli, WritesEveryFileOfAPacking) {
   const fs::path packing = scratch("ellipsoids.csv");
   microstructure::write_packing_file(packing.string(), random_ellipsoids(8, 14.0, 2));
@@ -49,7 +70,9 @@ TEST(AnalyseCli, WritesEveryFileOfAPacking) {
                            "force_network.vtp", "normal_force_pdf.csv", "packing.csv", "analysis.txt"})
     EXPECT_TRUE(fs::exists(out / file)) << file;
   const auto keys = read_keys(out / "analysis.txt");
-  EXPECT_EQ(keys.at("grid"), "40 x 40 x 40");
+  const toml::table analysis = read_toml(out / "analysis.txt");
+  for (std::size_t axis = 0; axis < 3; ++axis) EXPECT_EQ(analysis["grid"][axis].value<std::int64_t>(), 40) << axis;
+  EXPECT_NEAR(analysis["grid_spacing_um"][2].value<double>().value_or(0.0), 0.35, 0.35 * 1e-6);
   EXPECT_EQ(fs::file_size(out / "solid.npy"), 128U + 40U * 40U * 40U);  // header padded to 128 bytes
   for (const char* key : {"tortuosity_x", "tortuosity_y", "tortuosity_z", "tortuosity_z_coarse"}) {
     ASSERT_TRUE(keys.contains(key)) << key;
@@ -101,7 +124,10 @@ TEST(AnalyseCli, NonPercolatingDirectionReportsInfinityWithTheReason) {
   const auto keys = read_keys(out / "analysis.txt");
   EXPECT_EQ(keys.at("tortuosity_z"), "inf");
   EXPECT_EQ(keys.at("tortuosity_z_coarse"), "inf");
-  EXPECT_NE(keys.at("tortuosity_z_note").find("no pore path connects the faces z = min and z = max"),
+  const toml::table analysis = read_toml(out / "analysis.txt");  // inf and the quoted note are TOML too
+  EXPECT_TRUE(std::isinf(analysis["tortuosity_z"].value<double>().value_or(0.0)));
+  EXPECT_NE(analysis["tortuosity_z_note"].value<std::string>().value_or("").find(
+                "no pore path connects the faces z = min and z = max"),
             std::string::npos);
   for (const char* key : {"tortuosity_x", "tortuosity_y"}) {
     EXPECT_FALSE(keys.contains(std::string(key) + "_note")) << key;

@@ -57,7 +57,7 @@ def test_analyse_writes_the_files_and_the_cli_draws_them(tmp_path, cli):
     packing = ms.Packing(centres, rng.uniform(1, 2, size=(10, 3)), np.tile([1.0, 0, 0, 0], (10, 1)), [0, 0, 0],
                          [12, 12, 12])
     summary = ms.analyse(packing, str(tmp_path / "py"), spacing=0.4)
-    assert summary["grid"] == "30 x 30 x 30"
+    assert summary["grid"] == [30, 30, 30]
     assert 0 < summary["porosity_voxels"] < 1
     ms.write_packing(str(tmp_path / "p.csv"), packing)
     subprocess.run([cli, "analyse", str(tmp_path / "p.csv"), "--spacing", "0.4", "-o", str(tmp_path / "cli")],
@@ -67,4 +67,6 @@ def test_analyse_writes_the_files_and_the_cli_draws_them(tmp_path, cli):
     solid = np.load(tmp_path / "cli" / "solid.npy")
     assert solid.shape == (30, 30, 30)
     assert abs(solid.mean() - (1 - summary["porosity_voxels"])) < 1e-12
-    assert ms.read_summary(tmp_path / "cli")["tortuosity_z"] == summary["tortuosity_z"]
+    from_file = ms.read_summary(tmp_path / "cli")  # analysis.txt, a TOML document
+    assert from_file["tortuosity_z"] == summary["tortuosity_z"]
+    assert from_file["grid"] == [30, 30, 30]

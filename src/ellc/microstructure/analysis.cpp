@@ -1,11 +1,14 @@
 #include "ellc/microstructure/analysis.hpp"
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <ostream>
+#include <string>
+#include <type_traits>
 
 #include "ellc/io/input_error.hpp"
 #include "ellc/microstructure/export.hpp"
@@ -23,6 +26,40 @@ double mean_radius(const Packing& packing) {
 }
 
 std::string number_or_inf(double value) { return std::isfinite(value) ? format_number(value) : "inf"; }
+
+// A TOML float: the shortest round-trip form with a decimal point (1 would read as an integer),
+// inf and nan as TOML spells them.
+std::string toml_float(double value) {
+  if (std::isnan(value)) return "nan";
+  if (std::isinf(value)) return value > 0.0 ? "inf" : "-inf";
+  std::string text = format_number(value);
+  if (text.find_first_of(".eE") == std::string::npos) text += ".0";
+  return text;
+}
+
+// A TOML basic string: the notes are prose, so only quotes and backslashes need escaping (and
+// control characters, which a note never holds, become spaces rather than break the document).
+std::string toml_string(const std::string& text) {
+  std::string quoted = "\"";
+  for (const char c : text) {
+    if (c == '"' || c == '\\') quoted += '\\';
+    quoted += static_cast<unsigned char>(c) < 0x20 ? ' ' : c;
+  }
+  return quoted + '"';
+}
+
+template <typename Value>
+std::string toml_array(const std::array<Value, 3>& values) {
+  std::string text = "[";
+  for (std::size_t k = 0; k < 3; ++k) {
+    if (k > 0) text += ", ";
+    if constexpr (std::is_floating_point_v<Value>)
+      text += toml_float(values[k]);
+    else
+      text += std::to_string(values[k]);
+  }
+  return text + "]";
+}
 
 }  // namespace
 
@@ -63,26 +100,26 @@ AnalysisReport analyse(const Packing& packing, const AnalysisOptions& options, c
 void write_analysis_summary(std::ostream& out, const AnalysisReport& report) {
   const VoxelGrid& grid = report.grid;
   out << "particles = " << report.particles << "\ncontacts = " << report.contacts
-      << "\nvoxel_size_um = " << format_number(report.spacing) << "\ngrid = " << grid.shape[0] << " x " << grid.shape[1]
-      << " x " << grid.shape[2] << "\ngrid_spacing_um = " << format_number(grid.spacing.x()) << ' '
-      << format_number(grid.spacing.y()) << ' ' << format_number(grid.spacing.z())
-      << "\nvoxelise_seconds = " << format_number(report.voxelise_seconds)
-      << "\nporosity_analytic = " << format_number(report.porosity_analytic)
-      << "\nporosity_voxels = " << format_number(report.porosity_voxels)
-      << "\npore_radius_median_um = " << format_number(report.pore_sizes.median_radius)
-      << "\npore_radius_largest_um = " << format_number(report.pore_sizes.largest_radius)
-      << "\nmean_normal_force_uN = " << format_number(report.forces.mean_force) << '\n';
+      << "\nvoxel_size_um = " << toml_float(report.spacing) << "\ngrid = " << toml_array(grid.shape)
+      << "\ngrid_spacing_um = "
+      << toml_array(std::array<double, 3>{grid.spacing.x(), grid.spacing.y(), grid.spacing.z()})
+      << "\nvoxelise_seconds = " << toml_float(report.voxelise_seconds)
+      << "\nporosity_analytic = " << toml_float(report.porosity_analytic)
+      << "\nporosity_voxels = " << toml_float(report.porosity_voxels)
+      << "\npore_radius_median_um = " << toml_float(report.pore_sizes.median_radius)
+      << "\npore_radius_largest_um = " << toml_float(report.pore_sizes.largest_radius)
+      << "\nmean_normal_force_uN = " << toml_float(report.forces.mean_force) << '\n';
   const auto write = [&](const std::optional<DiffusionResult>& result, const std::string& suffix) {
     if (!result) return;
     const char axis = kAxes[static_cast<std::size_t>(result->axis)];
-    out << "tortuosity_" << axis << suffix << " = " << number_or_inf(result->tortuosity) << '\n';
-    if (!result->reason.empty()) out << "tortuosity_" << axis << suffix << "_note = " << result->reason << '\n';
+    out << "tortuosity_" << axis << suffix << " = " << toml_float(result->tortuosity) << '\n';
+    if (!result->reason.empty())
+      out << "tortuosity_" << axis << suffix << "_note = " << toml_string(result->reason) << '\n';
   };
   for (const auto& result : report.tortuosity) write(result, "");
   if (report.coarse_spacing > 0.0) {
-    out << "coarse_voxel_size_um = " << format_number(report.coarse_spacing)
-        << "\ncoarse_grid = " << report.coarse_shape[0] << " x " << report.coarse_shape[1] << " x "
-        << report.coarse_shape[2] << '\n';
+    out << "coarse_voxel_size_um = " << toml_float(report.coarse_spacing)
+        << "\ncoarse_grid = " << toml_array(report.coarse_shape) << '\n';
     for (const auto& result : report.tortuosity_coarse) write(result, "_coarse");
   }
 }

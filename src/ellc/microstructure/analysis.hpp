@@ -53,8 +53,8 @@ struct AnalysisReport {
 // and analysis.txt (write_analysis_summary). The PNGs are drawn from the CSVs by
 // `python3 -m ellc.plots analysis DIRECTORY`.
 void write_analysis(const std::string& directory, const Packing& packing, const AnalysisReport& report);
-// `key = value` lines: grid, porosities, τ per axis at both resolutions (inf and the reason when
-// a direction does not percolate), pore sizes, forces.
+// A TOML document, one key per line: grid, porosities, τ per axis at both resolutions (inf and
+// the reason when a direction does not percolate), pore sizes, forces.
 void write_analysis_summary(std::ostream& out, const AnalysisReport& report);
 
 }  // namespace ellc::microstructure
