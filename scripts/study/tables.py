@@ -10,6 +10,7 @@ import csv
 import pathlib
 import statistics
 import sys
+import tomllib
 
 # The summary figures the studies compare: key, name, unit of a change, relative change?
 FIGURES = [("loaded_thickness_um", "loaded thickness", "%", True),
@@ -40,8 +41,9 @@ def summary(run_dir):
     path = run_dir / "summary.txt"
     if not path.exists():
         return None
-    values = dict(line.split(" = ", 1) for line in path.read_text().splitlines() if " = " in line)
-    return values if values.get("finished") == "true" else None
+    with path.open("rb") as handle:
+        values = tomllib.load(handle)  # summary.txt is a TOML document (docs/engine.md)
+    return values if values.get("finished") is True else None
 
 
 def last_row(run_dir):
