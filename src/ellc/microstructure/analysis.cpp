@@ -11,6 +11,7 @@
 #include <type_traits>
 
 #include "ellc/io/input_error.hpp"
+#include "ellc/io/toml_text.hpp"
 #include "ellc/microstructure/export.hpp"
 
 namespace ellc::microstructure {
@@ -26,27 +27,6 @@ double mean_radius(const Packing& packing) {
 }
 
 std::string number_or_inf(double value) { return std::isfinite(value) ? format_number(value) : "inf"; }
-
-// A TOML float: the shortest round-trip form with a decimal point (1 would read as an integer),
-// inf and nan as TOML spells them.
-std::string toml_float(double value) {
-  if (std::isnan(value)) return "nan";
-  if (std::isinf(value)) return value > 0.0 ? "inf" : "-inf";
-  std::string text = format_number(value);
-  if (text.find_first_of(".eE") == std::string::npos) text += ".0";
-  return text;
-}
-
-// A TOML basic string: the notes are prose, so only quotes and backslashes need escaping (and
-// control characters, which a note never holds, become spaces rather than break the document).
-std::string toml_string(const std::string& text) {
-  std::string quoted = "\"";
-  for (const char c : text) {
-    if (c == '"' || c == '\\') quoted += '\\';
-    quoted += static_cast<unsigned char>(c) < 0x20 ? ' ' : c;
-  }
-  return quoted + '"';
-}
 
 template <typename Value>
 std::string toml_array(const std::array<Value, 3>& values) {

@@ -5,6 +5,7 @@
 
 #include "ellc/geometry/ellipsoid.hpp"
 #include "ellc/io/input_error.hpp"
+#include "ellc/io/toml_text.hpp"
 #include "ellc/scenario/checkpoint.hpp"
 
 namespace ellc::scenario {
@@ -75,25 +76,24 @@ std::string states_summary(const std::vector<StateAnalysis>& states) {
   std::vector<double> tortuosity;
   for (const StateAnalysis& state : states) {
     const auto& report = state.report;
-    out << "analysis_" << state.state << "_porosity = " << format_number(report.porosity_voxels) << '\n';
+    out << "analysis_" << state.state << "_porosity = " << toml_float(report.porosity_voxels) << '\n';
     if (const auto& tau = report.tortuosity[2]) {
-      out << "analysis_" << state.state
-          << "_tortuosity_z = " << (std::isfinite(tau->tortuosity) ? format_number(tau->tortuosity) : "inf") << '\n';
-      if (!tau->reason.empty()) out << "analysis_" << state.state << "_tortuosity_z_note = " << tau->reason << '\n';
+      out << "analysis_" << state.state << "_tortuosity_z = " << toml_float(tau->tortuosity) << '\n';
+      if (!tau->reason.empty())
+        out << "analysis_" << state.state << "_tortuosity_z_note = " << toml_string(tau->reason) << '\n';
       porosity.push_back(report.porosity_voxels);
       tortuosity.push_back(tau->tortuosity);
     }
     if (const auto& coarse = report.tortuosity_coarse[2])
-      out << "analysis_" << state.state << "_tortuosity_z_coarse = "
-          << (std::isfinite(coarse->tortuosity) ? format_number(coarse->tortuosity) : "inf") << "  # at "
+      out << "analysis_" << state.state << "_tortuosity_z_coarse = " << toml_float(coarse->tortuosity) << "  # at "
           << format_number(report.coarse_spacing) << " um voxels (" << format_number(report.spacing) << " above)\n";
   }
   const double alpha = microstructure::fit_bruggeman_exponent(porosity, tortuosity);
   if (std::isfinite(alpha))
-    out << "analysis_bruggeman_exponent = " << format_number(alpha)
+    out << "analysis_bruggeman_exponent = " << toml_float(alpha)
         << "  # D_eff/D = porosity^alpha over the states above (Bruggeman: 1.5)\n";
   else
-    out << "analysis_bruggeman_exponent = n/a  # no state with a finite tortuosity and 0 < porosity < 1\n";
+    out << "analysis_bruggeman_exponent = nan  # no state with a finite tortuosity and 0 < porosity < 1\n";
   return out.str();
 }
 

@@ -33,8 +33,9 @@ struct StateAnalysis {
 };
 
 // The through-plane (z) summary over the states: porosity, τ_z, and the Bruggeman exponent fitted
-// across them (microstructure::fit_bruggeman_exponent), as `key = value` lines (also appended to
-// summary.txt by `ellc dem`).
+// across them (microstructure::fit_bruggeman_exponent), as TOML `key = value` lines (appended to
+// summary.txt, a TOML document, by `ellc dem`): inf where τ does not percolate, with the quoted
+// reason; nan for an exponent no state determines.
 [[nodiscard]] std::string states_summary(const std::vector<StateAnalysis>& states);
 
 }  // namespace ellc::scenario
