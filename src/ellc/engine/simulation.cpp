@@ -272,11 +272,11 @@ void Simulation::compute_forces() {
   const std::size_t pair_count = pairs_.size();
   if (!parallel()) {
     // One thread: each pair adds to its particles as it is evaluated. The walls go first and the
-    // pairs in list order, which is the order accumulate() sums in, so the bits are the same as
+    // pairs in list order, which is the order gather_pair_forces() sums in, so the bits are the same as
     // with threads; it saves reading every result back through the per-particle index.
     for (std::size_t slot = 0; slot < count; ++slot) evaluate_walls_and_reset(slot);
     for (std::size_t index = 0; index < pair_count; ++index) evaluate_pair(index, true);
-    accumulate(false);
+    accumulate();
     return;
   }
 #pragma omp parallel num_threads(threads_)
@@ -286,7 +286,8 @@ void Simulation::compute_forces() {
 #pragma omp for schedule(dynamic, 256)
     for (std::size_t index = 0; index < pair_count; ++index) evaluate_pair(index, false);
   }
-  accumulate(true);
+  gather_pair_forces();
+  accumulate();
 }
 
 // Wall contacts of one particle; also starts the particle's force and torque sums with them.
@@ -402,7 +403,7 @@ void Simulation::evaluate_pair(std::size_t index, bool add_to_particles) {
     result.damping_dissipation = forces.contact.damping_dissipation;
     result.friction_dissipation = forces.contact.friction_dissipation;
   }
-  if (add_to_particles) {  // the operations of accumulate(), zeros included (they can turn -0 into +0)
+  if (add_to_particles) {  // the operations of gather_pair_forces(), zeros included (they can turn -0 into +0)
     p.force[i] -= result.force_on_j;
     p.torque[i] += result.torque_i;
     p.force[j] += result.force_on_j;
@@ -410,30 +411,13 @@ void Simulation::evaluate_pair(std::size_t index, bool add_to_particles) {
   }
 }
 
-// Where contributions meet. Each particle adds its pair forces to its wall forces in pair-list
-// order, the order a serial sweep over the list would use, so the sums are the same bits for any
-// thread count (without pair_forces the pairs have added themselves in that sweep). Scalar
-// totals: fixed chunks of the list, each summed in order, then in order.
-void Simulation::accumulate(bool pair_forces) {
+// With threads, where pair forces meet: each particle adds its pair results to its wall forces
+// in pair-list order, the order a serial sweep over the list would use (and the one-thread path
+// of compute_forces does use), so the sums are the same bits for any thread count.
+void Simulation::gather_pair_forces() {
   auto& p = particles_;
-  const std::size_t count = p.size();
-  for (auto& wall : walls_) wall.force.setZero();
-  wall_stiffness_.fill(0.0);
-  for (int w = 0; w < 2; ++w) {
-    const auto& results = wall_results_[w];
-    for (std::size_t slot = 0; slot < results.size(); ++slot) {
-      if (wall_reported_[w][slot] == 0) continue;
-      walls_[w].force += results[slot].force_on_wall;
-      wall_stiffness_[w] += results[slot].normal_stiffness;
-      released_work_ += results[slot].released_work;
-      damping_dissipation_ += results[slot].damping_dissipation;
-      friction_dissipation_ += results[slot].friction_dissipation;
-      failures_ += results[slot].failed ? 1U : 0U;
-    }
-  }
-  const bool in_parallel = parallel();
-#pragma omp parallel for schedule(static) num_threads(threads_) if (in_parallel && pair_forces)
-  for (std::size_t slot = 0; slot < (pair_forces ? count : 0); ++slot) {
+#pragma omp parallel for schedule(static) num_threads(threads_)
+  for (std::size_t slot = 0; slot < p.size(); ++slot) {
     Eigen::Vector3d force = p.force[slot];
     Eigen::Vector3d torque = p.torque[slot];
     for (std::uint32_t k = pairs_of_particle_start_[slot]; k < pairs_of_particle_start_[slot + 1]; ++k) {
@@ -452,6 +436,26 @@ void Simulation::accumulate(bool pair_forces) {
     p.force[slot] = force;
     p.torque[slot] = torque;
   }
+}
+
+// The walls' forces and stiffnesses, and the scalar totals of the step: fixed chunks of the pair
+// list, each summed in order, then in order (the same bits for any thread count).
+void Simulation::accumulate() {
+  for (auto& wall : walls_) wall.force.setZero();
+  wall_stiffness_.fill(0.0);
+  for (int w = 0; w < 2; ++w) {
+    const auto& results = wall_results_[w];
+    for (std::size_t slot = 0; slot < results.size(); ++slot) {
+      if (wall_reported_[w][slot] == 0) continue;
+      walls_[w].force += results[slot].force_on_wall;
+      wall_stiffness_[w] += results[slot].normal_stiffness;
+      released_work_ += results[slot].released_work;
+      damping_dissipation_ += results[slot].damping_dissipation;
+      friction_dissipation_ += results[slot].friction_dissipation;
+      failures_ += results[slot].failed ? 1U : 0U;
+    }
+  }
+  const bool in_parallel = parallel();
   constexpr std::size_t kChunk = 4096;
   const std::size_t chunks = (pairs_.size() + kChunk - 1) / kChunk;
   chunk_sums_.assign(chunks, ChunkSums{});

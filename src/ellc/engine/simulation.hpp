@@ -198,7 +198,8 @@ class Simulation {
   void compute_forces();
   void evaluate_pair(std::size_t index, bool add_to_particles);
   void evaluate_walls_and_reset(std::size_t slot);
-  void accumulate(bool pair_forces);
+  void gather_pair_forces();
+  void accumulate();
   [[noreturn]] void report_runaway(std::size_t first_bad) const;
   void choose_threads() noexcept;
   [[nodiscard]] bool parallel() const noexcept {
