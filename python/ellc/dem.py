@@ -591,7 +591,7 @@ class Run:
         return read_timeseries(os.path.join(self.output_directory, "timeseries.csv"))
 
     def summary(self):
-        """The figures of summary.txt for the current state, as a dict (8 significant digits).
+        """The figures of summary.txt for the current state, as a dict (exact floats; counts as ints).
         summary.txt is a TOML document; this is its table."""
         return tomllib.loads(self._core.summary_text())
 

@@ -1,15 +1,17 @@
-// states_summary: the lines `ellc dem` appends to summary.txt must keep that file a TOML
-// document also when τ_z does not percolate (inf and a prose reason) and when no state gives a
-// Bruggeman exponent.
+// summary.txt is a TOML document: write_summary_lines gives every real number exactly and as a
+// float, and states_summary (the lines `ellc dem` appends) keeps it TOML also when τ_z does not
+// percolate (inf and a prose reason) and when no state gives a Bruggeman exponent.
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <limits>
+#include <sstream>
 #include <string>
 #include <vector>
 
 #include <toml++/toml.h>
 
+#include "ellc/scenario/run_outputs.hpp"
 #include "ellc/scenario/state_analysis.hpp"
 
 namespace {
@@ -59,6 +61,37 @@ TEST(StatesSummary, FiniteTortuositiesGiveAFiniteExponent) {
   EXPECT_TRUE(table["analysis_bruggeman_exponent"].is_floating_point());
   EXPECT_TRUE(std::isfinite(table["analysis_bruggeman_exponent"].value<double>().value_or(NAN)));
   EXPECT_FALSE(table.contains("analysis_loaded_tortuosity_z_note"));
+}
+
+// Real numbers round-trip bit for bit and stay floats when they look like integers (a plate at
+// rest: 0; a held pressure of 300), or are not finite; counts stay integers.
+TEST(RunSummaryFile, RealsAreExactFloatsAndCountsIntegers) {
+  scenario::RunSummary summary;
+  summary.finished = true;
+  summary.particles = 100;
+  summary.steps = 84389;
+  summary.held_pressure = 300.0;
+  summary.loaded_thickness = 0.1 + 83.74;  // 17 significant digits to keep
+  summary.plastic_dissipation = 2987.5912345678901;
+  summary.plate_work = 96923.2;
+  summary.released_plate_speed = 0.0;
+  summary.released_unbalanced_force_ratio = std::numeric_limits<double>::quiet_NaN();
+  summary.loaded_validity.pair_contacts = 231;
+  std::ostringstream out;
+  scenario::write_summary_lines(out, "quick.toml", summary);
+  const toml::table table = parsed(out.str());
+  for (const char* key : {"held_pressure_MPa", "released_plate_speed_um_per_us", "loaded_thickness_um",
+                          "plastic_share_of_plate_work", "released_unbalanced_force_ratio", "validity_threshold"})
+    EXPECT_TRUE(table[key].is_floating_point()) << key;
+  EXPECT_EQ(table["loaded_thickness_um"].value<double>(), summary.loaded_thickness);
+  EXPECT_EQ(table["plastic_share_of_plate_work"].value<double>(), summary.plastic_share_of_plate_work());
+  EXPECT_EQ(table["held_pressure_MPa"].value<double>(), 300.0);
+  EXPECT_TRUE(std::isnan(table["released_unbalanced_force_ratio"].value<double>().value_or(0.0)));
+  for (const char* key : {"particles", "steps", "narrow_phase_failures", "loaded_pair_contacts"})
+    EXPECT_TRUE(table[key].is_integer()) << key;
+  EXPECT_EQ(table["steps"].value<std::int64_t>(), 84389);
+  EXPECT_EQ(table["finished"].value<bool>(), true);
+  EXPECT_EQ(table["validity_r_hat"].value<std::string>(), "smaller_particle_of_the_pair");
 }
 
 }  // namespace
