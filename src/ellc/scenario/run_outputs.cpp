@@ -3,7 +3,9 @@
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
+#include <initializer_list>
 #include <stdexcept>
+#include <utility>
 #include <vector>
 
 #include "ellc/io/input_error.hpp"
@@ -214,52 +216,54 @@ void write_summary_lines(std::ostream& out, const std::string& scenario_source, 
   // A TOML document: every real number in its shortest round-trip form with a decimal point
   // (toml_float), so that a reader gets the run's doubles exactly and as floats (0 would read as
   // an integer); counts are integers.
-  const auto line = [&out](const char* key, double value) { out << key << " = " << toml_float(value) << '\n'; };
+  const auto reals = [&out](std::initializer_list<std::pair<const char*, double>> figures) {
+    for (const auto& [key, value] : figures) out << key << " = " << toml_float(value) << '\n';
+  };
   const auto flag = [&out](const char* key, bool value) { out << key << " = " << (value ? "true" : "false") << '\n'; };
   out << "# ellc dem summary: " << scenario_source << "\n";
   flag("finished", s.finished);
   out << "particles = " << s.particles << "\nsteps = " << s.steps << '\n';
-  line("time_us", s.time);
-  line("dt_us", s.dt);
-  line("dt_estimate_us", s.dt_estimate);
-  line("max_pressure_MPa", s.max_pressure);
-  line("loaded_thickness_um", s.loaded_thickness);
-  line("final_thickness_um", s.final_thickness);
-  line("springback_percent", s.springback_percent);
-  line("loaded_porosity", s.loaded_porosity);
-  line("final_porosity", s.final_porosity);
-  line("plastic_dissipation_pJ", s.plastic_dissipation);
-  line("plastic_dissipation_calendering_pJ", s.plastic_dissipation_calendering);
+  reals({{"time_us", s.time},
+         {"dt_us", s.dt},
+         {"dt_estimate_us", s.dt_estimate},
+         {"max_pressure_MPa", s.max_pressure},
+         {"loaded_thickness_um", s.loaded_thickness},
+         {"final_thickness_um", s.final_thickness},
+         {"springback_percent", s.springback_percent},
+         {"loaded_porosity", s.loaded_porosity},
+         {"final_porosity", s.final_porosity},
+         {"plastic_dissipation_pJ", s.plastic_dissipation},
+         {"plastic_dissipation_calendering_pJ", s.plastic_dissipation_calendering}});
   out << "narrow_phase_failures = " << s.narrow_phase_failures << '\n';
-  line("plate_work_pJ", s.plate_work);
-  line("plastic_share_of_plate_work", s.plastic_share_of_plate_work());
-  line("gravity_work_pJ", s.gravity_work);
-  line("energy_residual_pJ", s.energy_residual);
-  line("energy_residual_fraction", s.energy_residual_fraction);
-  line("held_pressure_MPa", s.held_pressure);
-  line("loaded_time_us", s.loaded_time);
-  line("loaded_plate_speed_um_per_us", s.loaded_plate_speed);
-  line("released_time_us", s.released_time);
-  line("released_unbalanced_force_ratio", s.released_unbalanced_force_ratio);
-  line("released_pressure_MPa", s.released_pressure);
-  line("released_plate_speed_um_per_us", s.released_plate_speed);
-  line("loaded_inertial_number", s.loaded_inertial_number);
-  line("released_inertial_number", s.released_inertial_number);
+  reals({{"plate_work_pJ", s.plate_work},
+         {"plastic_share_of_plate_work", s.plastic_share_of_plate_work()},
+         {"gravity_work_pJ", s.gravity_work},
+         {"energy_residual_pJ", s.energy_residual},
+         {"energy_residual_fraction", s.energy_residual_fraction},
+         {"held_pressure_MPa", s.held_pressure},
+         {"loaded_time_us", s.loaded_time},
+         {"loaded_plate_speed_um_per_us", s.loaded_plate_speed},
+         {"released_time_us", s.released_time},
+         {"released_unbalanced_force_ratio", s.released_unbalanced_force_ratio},
+         {"released_pressure_MPa", s.released_pressure},
+         {"released_plate_speed_um_per_us", s.released_plate_speed},
+         {"loaded_inertial_number", s.loaded_inertial_number},
+         {"released_inertial_number", s.released_inertial_number}});
   const engine::ValidityReport& v = s.loaded_validity;
   const ValidityShares& share = s.loaded_validity_shares;
   out << "# the loaded state (end of the hold); validity: c_c at delta_* (eq. 9) over r^ = the mean radius of the\n"
       << "# pair's smaller particle (the particle's own against a wall), contacts beyond validity_threshold\n";
   flag("loaded_state_recorded", s.loaded_state_recorded);
-  line("loaded_unbalanced_force_ratio", s.loaded_unbalanced_force_ratio);
-  line("loaded_kinetic_over_elastic", s.loaded_kinetic_over_elastic);
-  line("validity_threshold", v.threshold);
+  reals({{"loaded_unbalanced_force_ratio", s.loaded_unbalanced_force_ratio},
+         {"loaded_kinetic_over_elastic", s.loaded_kinetic_over_elastic},
+         {"validity_threshold", v.threshold}});
   out << "validity_r_hat = \"smaller_particle_of_the_pair\"\nloaded_pair_contacts = " << v.pair_contacts << '\n';
-  line("loaded_pair_contacts_beyond_fraction", share.pair_contacts);
-  line("loaded_pair_force_beyond_fraction", share.pair_force);
+  reals({{"loaded_pair_contacts_beyond_fraction", share.pair_contacts},
+         {"loaded_pair_force_beyond_fraction", share.pair_force}});
   out << "loaded_wall_contacts = " << v.wall_contacts << '\n';
-  line("loaded_wall_contacts_beyond_fraction", share.wall_contacts);
-  line("loaded_wall_force_beyond_fraction", share.wall_force);
-  line("loaded_largest_size_ratio", v.largest_ratio);
+  reals({{"loaded_wall_contacts_beyond_fraction", share.wall_contacts},
+         {"loaded_wall_force_beyond_fraction", share.wall_force},
+         {"loaded_largest_size_ratio", v.largest_ratio}});
   if (s.particles_per_species.size() > 1) {  // several species ([[species]], in their order)
     out << "# particles of each species ([[species]] in their order)\n";
     for (std::size_t k = 0; k < s.particles_per_species.size(); ++k)
