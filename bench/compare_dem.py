@@ -7,7 +7,9 @@ the binaries so that both see the same machine load; the table gives each case's
   /usr/bin/python3 bench/compare_dem.py --baseline /work/wt/perf-baseline/bench_dem \
       --new build/bench/bench_dem --rounds 3 --threads 1 2 --busy 0 1 --json out.json
 
-Environment: ELLC_BENCH_DEM_PARTICLES and ELLC_BENCH_DEM_STEPS pass through to bench_dem.
+Environment: ELLC_BENCH_DEM_PARTICLES, ELLC_BENCH_DEM_STEPS and ELLC_BENCH_DEM_STATE (a file
+that keeps the pressed packing, so that each run skips the pressing and both builds time the same
+packing; both builds must read it) pass through to bench_dem.
 """
 import argparse
 import json
