@@ -323,24 +323,42 @@ void find_candidate_pairs(const ParticleSet& particles, const Box& box, double s
   ELLC_ASSERT(invariants::valid_pair_list(pairs, particles), "pairs not sorted by key, or slots/ids inconsistent");
 }
 
-double carry_over_history(std::vector<PairSlot>& previous, std::vector<PairSlot>& next) noexcept {
+double carry_over_history(std::vector<PairSlot>& previous, std::vector<PairSlot>& next, bool parallel) {
   ELLC_ASSERT(invariants::keys_sorted(previous) && invariants::keys_sorted(next), "both lists must be sorted by key");
-  double released_work = 0.0;
-  std::size_t n = 0;
-  for (auto& old_pair : previous) {
-    // Separated pairs keep their last separating axis: it spares the next narrow phase a cold start.
-    const bool active = old_pair.history.active();
-    if (!active && !old_pair.cache.constants_cached && old_pair.history.warm_valid == 0.0) continue;
-    while (n < next.size() && next[n].key < old_pair.key) ++n;
-    if (n < next.size() && next[n].key == old_pair.key) {
-      next[n].history = old_pair.history;
-      next[n].cache = old_pair.cache;
-    } else if (active) {
-      // Plastic work and the spring's energy, both dissipated (the pair left the list while touching).
-      released_work +=
-          plastic_work(old_pair.cache.constants, old_pair.history.max_overlap) + old_pair.history.spring_energy();
+  // Fixed chunks of the old list, each merged from its first key's place in the new one: the
+  // copies are disjoint (keys are unique), and the energy of contacts that left the list is summed
+  // afterwards in list order, so the bits do not depend on the thread count (nor differ from a
+  // single merge). Such contacts are few; most chunks release nothing.
+  constexpr std::size_t kChunk = 4096;
+  const std::size_t chunks = (previous.size() + kChunk - 1) / kChunk;
+  std::vector<std::vector<double>> released(chunks);
+#pragma omp parallel for schedule(dynamic, 1) if (parallel)
+  for (std::size_t chunk = 0; chunk < chunks; ++chunk) {
+    const std::size_t begin = chunk * kChunk;
+    const std::size_t end = std::min(previous.size(), begin + kChunk);
+    auto n =
+        static_cast<std::size_t>(std::lower_bound(next.begin(), next.end(), previous[begin].key,
+                                                  [](const PairSlot& pair, PairKey key) { return pair.key < key; }) -
+                                 next.begin());
+    for (std::size_t k = begin; k < end; ++k) {
+      PairSlot& old_pair = previous[k];
+      // Separated pairs keep their last separating axis: it spares the next narrow phase a cold start.
+      const bool active = old_pair.history.active();
+      if (!active && !old_pair.cache.constants_cached && old_pair.history.warm_valid == 0.0) continue;
+      while (n < next.size() && next[n].key < old_pair.key) ++n;
+      if (n < next.size() && next[n].key == old_pair.key) {
+        next[n].history = old_pair.history;
+        next[n].cache = old_pair.cache;
+      } else if (active) {
+        // Plastic work and the spring's energy, both dissipated (the pair left the list while touching).
+        released[chunk].push_back(plastic_work(old_pair.cache.constants, old_pair.history.max_overlap) +
+                                  old_pair.history.spring_energy());
+      }
     }
   }
+  double released_work = 0.0;
+  for (const std::vector<double>& values : released)
+    for (const double value : values) released_work += value;
   return released_work;
 }
 

@@ -22,8 +22,9 @@ void find_candidate_pairs(const ParticleSet& particles, const Box& box, double s
 
 // Moves the histories of `previous` into `next` where the keys match (both sorted by key).
 // Returns the plastic work and the tangential-spring energy of active contacts that dropped out
-// of the list (dissipated; the caller books both with the plastic work).
-double carry_over_history(std::vector<PairSlot>& previous, std::vector<PairSlot>& next) noexcept;
+// of the list (dissipated; the caller books both with the plastic work), summed in list order:
+// the same bits with or without `parallel` (threads over fixed chunks of `previous`).
+double carry_over_history(std::vector<PairSlot>& previous, std::vector<PairSlot>& next, bool parallel = false);
 
 // Wraps x and y into the periodic box.
 void wrap_positions(ParticleSet& particles, const Box& box) noexcept;

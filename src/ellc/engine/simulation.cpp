@@ -147,7 +147,7 @@ void Simulation::set_wall_position(int wall, double position) { walls_[wall].pos
 void Simulation::rebuild_neighbours() {
   wrap_positions(particles_, settings_.box);
   find_candidate_pairs(particles_, settings_.box, skin_, parallel(), spare_pairs_);
-  released_work_ += carry_over_history(pairs_, spare_pairs_);
+  released_work_ += carry_over_history(pairs_, spare_pairs_, parallel());
   std::swap(pairs_, spare_pairs_);  // the old list's storage serves the next rebuild
   pair_results_.assign(pairs_.size(), PairResult{});
   pair_reported_.assign(pairs_.size(), 0);
