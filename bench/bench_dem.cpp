@@ -10,7 +10,7 @@
 // ELLC_BENCH_DEM_STEPS the 300 timed steps (with fewer, the figure depends more on how many
 // neighbour-list rebuilds, about one per 20 steps, fall into the window),
 // ELLC_BENCH_DEM_FIXED_THREADS=1 switches the adaptive thread count off, ELLC_BENCH_DEM_STATE=FILE
-// keeps the pressed packing in FILE for the next run (cached_state). Counters: particle-steps/s,
+// keeps the pressed packing in FILE for the next run (read_pressed). Counters: particle-steps/s,
 // the threads the engine ran on at the end, and memory per particle (the simulation's resident
 // growth, and the process's peak). bench/compare_dem.py runs it against a baseline build with a
 // busy companion process; bench/scaling.py over N.
@@ -108,11 +108,10 @@ EngineSettings bench_settings(bool spheres, const ParticleSet& particles, const 
 // there after pressing when it does not. Repeated runs, and the two builds bench/compare_dem.py
 // interleaves, then skip the pressing (most of a run's time) and time the same packing, bit for
 // bit, which tightens a comparison on a noisy machine: more rounds in the same time.
-std::unique_ptr<Simulation> cached_state(const EngineSettings& settings, const ParticleSet& particles,
+std::unique_ptr<Simulation> read_pressed(const char* path, const EngineSettings& settings, const ParticleSet& particles,
                                          const std::array<Wall, 2>& walls) {
-  const char* path = std::getenv("ELLC_BENCH_DEM_STATE");
-  std::ifstream in(path != nullptr ? path : "", std::ios::binary);
-  if (path == nullptr || !in) return nullptr;
+  std::ifstream in(path, std::ios::binary);
+  if (!in) return nullptr;  // not written yet: this run presses and writes it
   auto sim = std::make_unique<Simulation>(settings, particles, walls);
   sim->read_state(in);  // throws, naming the reason, on a damaged file
   if (sim->particles().size() != particles.size())
@@ -128,7 +127,9 @@ const Simulation& dense_ellipsoids() {
     const Packing& packing = loose_packing();
     const EngineSettings settings = bench_settings(false, packing.particles, packing.box);
     std::array<Wall, 2> walls{Wall{0.0, 0.0, 1, {}}, Wall{packing.top, 0.0, -1, {}}};
-    if (auto cached = cached_state(settings, packing.particles, walls)) return cached;
+    const char* state_file = std::getenv("ELLC_BENCH_DEM_STATE");
+    if (state_file != nullptr)
+      if (auto pressed = read_pressed(state_file, settings, packing.particles, walls)) return pressed;
     auto sim = std::make_unique<Simulation>(settings, packing.particles, walls);
     const double solid = sim->particles().total_volume() / (packing.box.lx * packing.box.ly);
     const double target_gap = solid / 0.6;
@@ -137,10 +138,10 @@ const Simulation& dense_ellipsoids() {
     while (sim->gap() > target_gap) sim->step();
     sim->set_wall_velocity(kTopWall, 0.0);
     for (int step = 0; step < 300; ++step) sim->step();
-    if (const char* path = std::getenv("ELLC_BENCH_DEM_STATE")) {
-      std::ofstream out(path, std::ios::binary);
+    if (state_file != nullptr) {
+      std::ofstream out(state_file, std::ios::binary);
       sim->write_state(out);
-      if (!out) throw std::runtime_error(std::string("ELLC_BENCH_DEM_STATE = ") + path + ": cannot write");
+      if (!out) throw std::runtime_error(std::string("ELLC_BENCH_DEM_STATE = ") + state_file + ": cannot write");
     }
     return sim;
   }();
