@@ -274,9 +274,16 @@ void Simulation::compute_forces() {
     // One thread: each pair adds to its particles as it is evaluated. The walls go first and the
     // pairs in list order, which is the order gather_pair_forces() sums in, so the bits are the same as
     // with threads; it saves reading every result back through the per-particle index.
+    // Each pair's tallies are added as it is evaluated, in the chunks and order of
+    // sum_pair_chunk(), while its result is still in cache.
     for (std::size_t slot = 0; slot < count; ++slot) evaluate_walls_and_reset(slot);
-    for (std::size_t index = 0; index < pair_count; ++index) evaluate_pair(index, true);
-    accumulate();
+    chunk_sums_.assign(pair_chunk_count(), ChunkSums{});
+    std::uint64_t failures = 0;
+    for (std::size_t index = 0; index < pair_count; ++index) {
+      evaluate_pair(index, true);
+      tally_pair(index, chunk_sums_[index / kPairChunk], failures);
+    }
+    accumulate(failures);
     return;
   }
 #pragma omp parallel num_threads(threads_)
@@ -287,7 +294,11 @@ void Simulation::compute_forces() {
     for (std::size_t index = 0; index < pair_count; ++index) evaluate_pair(index, false);
   }
   gather_pair_forces();
-  accumulate();
+  chunk_sums_.assign(pair_chunk_count(), ChunkSums{});
+  std::uint64_t failures = 0;
+#pragma omp parallel for schedule(static) reduction(+ : failures) num_threads(threads_)
+  for (std::size_t chunk = 0; chunk < chunk_sums_.size(); ++chunk) chunk_sums_[chunk] = sum_pair_chunk(chunk, failures);
+  accumulate(failures);
 }
 
 // Wall contacts of one particle; also starts the particle's force and torque sums with them.
@@ -438,9 +449,28 @@ void Simulation::gather_pair_forces() {
   }
 }
 
-// The walls' forces and stiffnesses, and the scalar totals of the step: fixed chunks of the pair
-// list, each summed in order, then in order (the same bits for any thread count).
-void Simulation::accumulate() {
+// Adds pair `index`'s tallies of this step to `sums` and its failure to `failures`.
+void Simulation::tally_pair(std::size_t index, ChunkSums& sums, std::uint64_t& failures) const noexcept {
+  if (pair_reported_[index] == 0) return;
+  const PairResult& result = pair_results_[index];
+  sums.released += result.released_work;
+  sums.damping += result.damping_dissipation;
+  sums.friction += result.friction_dissipation;
+  failures += result.failed ? 1U : 0U;
+}
+
+// The tallies of one fixed chunk of the pair list, summed in list order.
+Simulation::ChunkSums Simulation::sum_pair_chunk(std::size_t chunk, std::uint64_t& failures) const noexcept {
+  ChunkSums sums;
+  const std::size_t end = std::min(pairs_.size(), (chunk + 1) * kPairChunk);
+  for (std::size_t index = chunk * kPairChunk; index < end; ++index) tally_pair(index, sums, failures);
+  return sums;
+}
+
+// The walls' forces and stiffnesses, and the scalar totals of the step: the walls in slot order,
+// then the pair chunks' sums (chunk_sums_, each summed in list order) in order: the same bits
+// for any thread count. `pair_failures` counts the failed pairs of the step.
+void Simulation::accumulate(std::uint64_t pair_failures) {
   for (auto& wall : walls_) wall.force.setZero();
   wall_stiffness_.fill(0.0);
   for (int w = 0; w < 2; ++w) {
@@ -455,30 +485,12 @@ void Simulation::accumulate() {
       failures_ += results[slot].failed ? 1U : 0U;
     }
   }
-  const bool in_parallel = parallel();
-  constexpr std::size_t kChunk = 4096;
-  const std::size_t chunks = (pairs_.size() + kChunk - 1) / kChunk;
-  chunk_sums_.assign(chunks, ChunkSums{});
-  std::uint64_t failures = 0;
-#pragma omp parallel for schedule(static) reduction(+ : failures) num_threads(threads_) if (in_parallel)
-  for (std::size_t chunk = 0; chunk < chunks; ++chunk) {
-    ChunkSums sums;
-    for (std::size_t index = chunk * kChunk; index < std::min(pairs_.size(), (chunk + 1) * kChunk); ++index) {
-      if (pair_reported_[index] == 0) continue;
-      const PairResult& result = pair_results_[index];
-      sums.released += result.released_work;
-      sums.damping += result.damping_dissipation;
-      sums.friction += result.friction_dissipation;
-      failures += result.failed ? 1U : 0U;
-    }
-    chunk_sums_[chunk] = sums;
-  }
   for (const ChunkSums& sums : chunk_sums_) {
     released_work_ += sums.released;
     damping_dissipation_ += sums.damping;
     friction_dissipation_ += sums.friction;
   }
-  failures_ += failures;
+  failures_ += pair_failures;
 }
 
 void Simulation::report_runaway(std::size_t first_bad) const {

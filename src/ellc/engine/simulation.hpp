@@ -199,7 +199,17 @@ class Simulation {
   void evaluate_pair(std::size_t index, bool add_to_particles);
   void evaluate_walls_and_reset(std::size_t slot);
   void gather_pair_forces();
-  void accumulate();
+  struct ChunkSums {
+    double released = 0.0;
+    double damping = 0.0;
+    double friction = 0.0;
+  };
+  // The pair list's tallies are summed in fixed chunks, so that threads give the same bits.
+  static constexpr std::size_t kPairChunk = 4096;
+  [[nodiscard]] std::size_t pair_chunk_count() const noexcept { return (pairs_.size() + kPairChunk - 1) / kPairChunk; }
+  void tally_pair(std::size_t index, ChunkSums& sums, std::uint64_t& failures) const noexcept;
+  [[nodiscard]] ChunkSums sum_pair_chunk(std::size_t chunk, std::uint64_t& failures) const noexcept;
+  void accumulate(std::uint64_t pair_failures);
   [[noreturn]] void report_runaway(std::size_t first_bad) const;
   void choose_threads() noexcept;
   [[nodiscard]] bool parallel() const noexcept {
@@ -238,11 +248,6 @@ class Simulation {
   // The pairs of each particle in pair-list order (CSR): entry = 2 × pair index + (particle is j).
   std::vector<std::uint32_t> pairs_of_particle_start_;
   std::vector<std::uint32_t> pairs_of_particle_;
-  struct ChunkSums {
-    double released = 0.0;
-    double damping = 0.0;
-    double friction = 0.0;
-  };
   std::vector<ChunkSums> chunk_sums_;
   std::array<std::vector<WallContact>, 2> wall_history_;  // per particle slot
   std::array<std::vector<WallResult>, 2> wall_results_;
