@@ -8,6 +8,7 @@
 
 #include <cmath>
 
+#include "ellc/contact/contact_force.hpp"
 #include "ellc/contact/contact_history.hpp"
 #include "ellc/contact/contact_parameters.hpp"
 #include "ellc/contact/pair_contact.hpp"

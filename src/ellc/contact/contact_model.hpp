@@ -2,7 +2,8 @@
 // The contact model both engines run: named sub-models behind one value type, in the manner of
 // LAMMPS's granular model (normal, damping, tangential), and the force of one touching contact.
 // The built-in engine (src/ellc/engine/simulation.cpp) and pair_style ellipsoid/bk
-// (integrations/lammps/pair_ellipsoid_bk.cpp) both call contact_forces() / wall_forces(), so a
+// (integrations/lammps/pair_ellipsoid_bk.cpp) both call pair_forces() / wall_forces() (pair_contact.hpp),
+// which call contact_force() (contact_force.hpp), so a
 // study moves between them with the same physics. docs/contact_model.md documents every sub-model.
 //
 //  normal      becker_kamlah   the elastoplastic law, evaluate_contact() (src/ellc/law/contact_law.hpp)
@@ -99,12 +100,6 @@ struct ContactForce {
                                   // servo's loop gain (engine/servo.hpp) sums it over the plate
 };
 
-// Force on J of one touching contact whose law force F_law = law_force was evaluated with
-// `constants` on the elastic branch `elastic` (both from evaluate_contact_on_branch). Updates the
-// history's tangential spring (δ_* is the caller's, from the law's result).
-[[nodiscard]] ContactForce contact_force(const InteractionContext& context, const ContactConstants& constants,
-                                         double law_force, const ElasticBranch& elastic,
-                                         const ContactKinematics& kinematics, double dt,
-                                         ContactHistory& history) noexcept;
+// contact_force(), the force of one touching contact under this model: contact_force.hpp.
 
 }  // namespace ellc

@@ -1,8 +1,8 @@
 #pragma once
-// Viscous damping of a contact and the damped normal force, shared by the DEM engine
-// (src/ellc/engine/contact_force.cpp) and pair ellipsoid/bk (integrations/lammps/contact_model.cpp).
-// Each caller chooses its own stiffness (engine: k_n = 2 E_e c_c; LAMMPS: the Hertz tangent
-// 3/2 C δ^{1/2}); the formulas below exist only here. Header-only, noexcept, no allocation.
+// Viscous damping of a contact and the damped normal force, used by contact_force()
+// (contact_force.hpp), which both engines run. The stiffness comes from the damping sub-model
+// (contact_model.hpp: k_n = 2 E_e c, or the Hertz tangent 3/2 C x^{1/2}); the formulas below exist
+// only here. Header-only, noexcept, no allocation.
 
 #include <algorithm>
 #include <cmath>

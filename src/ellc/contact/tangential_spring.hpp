@@ -1,8 +1,8 @@
 #pragma once
-// Coulomb friction with a tangential history spring (Cundall & Strack 1979), shared by the DEM
-// engine (src/ellc/engine/contact_force.cpp) and pair ellipsoid/bk
-// (integrations/lammps/contact_model.cpp). The callers compute k_t and c_t in their own way
-// (engine: Mindlin k_t = 8 G_e c_c; LAMMPS: k_t = ratio × k_n); the algorithm exists only here.
+// Coulomb friction with a tangential history spring (Cundall & Strack 1979), used by
+// contact_force() (contact_force.hpp), which both engines run. k_t and c_t come from the
+// tangential sub-model (contact_model.hpp: Mindlin k_t = 8 G_e c, or k_t = κ k_n); the algorithm
+// exists only here.
 //
 // One step, with n the unit normal I → J and v the velocity of J relative to I at the contact:
 //   1. ξ is carried onto the current tangent plane, its length kept (the contact plane turns
