@@ -102,7 +102,14 @@ inline const ContactConstants& cached_constants(ContactCache& cache, PrincipalCu
   return cache.constants;
 }
 
-inline void record_contact(PairSolution& solution, ContactHistory& history, ContactCache& cache) noexcept {
+// The law at the solution's overlap on the contact's constants; stores δ_* in the history and δ
+// in the cache.
+inline void apply_law(PairSolution& solution, const ContactConstants& constants, ContactHistory& history,
+                      ContactCache& cache) noexcept {
+  const LawOnBranch law = evaluate_contact_on_branch(constants, solution.overlap, history.max_overlap);
+  solution.law = law.law;
+  solution.branch = law.branch;
+  solution.constants = &constants;
   history.max_overlap = solution.law.max_overlap;
   cache.last_overlap = solution.overlap;
 }
@@ -130,11 +137,7 @@ inline PairSolution sphere_pair(const BodyRef& body_i, const BodyRef& body_j, Co
   const ContactConstants& constants =
       cached_constants(cache, {1.0 / radius_i, 1.0 / radius_i}, {1.0 / radius_j, 1.0 / radius_j},
                        body_i.mean_radius + body_j.mean_radius, context);
-  const LawOnBranch law = evaluate_contact_on_branch(constants, overlap, history.max_overlap);
-  solution.law = law.law;
-  solution.branch = law.branch;
-  solution.constants = &constants;
-  record_contact(solution, history, cache);
+  apply_law(solution, constants, history, cache);
   return solution;
 }
 
@@ -151,11 +154,7 @@ inline PairSolution sphere_wall(const BodyRef& body, const WallPlane& wall, Cont
   solution.point = Eigen::Vector3d(body.centre.x(), body.centre.y(), wall.position);
   const ContactConstants& constants =
       cached_constants(cache, {1.0 / radius, 1.0 / radius}, {0.0, 0.0}, 2.0 * body.mean_radius, context);
-  const LawOnBranch law = evaluate_contact_on_branch(constants, overlap, history.max_overlap);
-  solution.law = law.law;
-  solution.branch = law.branch;
-  solution.constants = &constants;
-  record_contact(solution, history, cache);
+  apply_law(solution, constants, history, cache);
   return solution;
 }
 
