@@ -55,12 +55,7 @@ struct WallPlane {
   int side = 1;
 };
 
-// Two bodies; `spheres` selects the closed-form path. Reads and updates the history's warm
-// start; on contact stores the law's new δ_* in the history and δ in the cache.
-
-// A body against a wall, mirror-image convention: r̂^{I,J} = 2 r̂^I, the wall flat (κ = 0).
-
-// The ellipsoid paths (pair_contact_ellipsoids.cpp), called by the two functions above.
+// The ellipsoid paths (pair_contact_ellipsoids.cpp), called by solve_pair and solve_wall below.
 [[nodiscard]] PairSolution solve_ellipsoid_pair(const BodyRef& body_i, const BodyRef& body_j, ContactHistory& history,
                                                 ContactCache& cache, const InteractionContext& context) noexcept;
 [[nodiscard]] PairSolution solve_ellipsoid_wall(const BodyRef& body, const WallPlane& wall, ContactHistory& history,
@@ -78,15 +73,10 @@ struct PairForces {
   Eigen::Vector3d torque_on_j = Eigen::Vector3d::Zero();
 };
 
-// Forces of a touching contact (solution.status == contact) on both bodies; `centre_j` is J's
-// (image) centre. Updates the history's tangential spring.
-
 struct WallForces {
   ContactForce contact;  // contact.on_j: the force on the wall; the force on the body is −contact.on_j
   Eigen::Vector3d lever_cross_force = Eigen::Vector3d::Zero();  // (x − c) × contact.on_j: −torque on the body
 };
-
-// A touching body–wall contact; the wall moves along z at `wall_velocity` and does not turn.
 
 // Definitions. Inline, like contact_force(): the engines call them once per contact and step.
 namespace pair_detail {
@@ -114,8 +104,8 @@ inline void apply_law(PairSolution& solution, const ContactConstants& constants,
   cache.last_overlap = solution.overlap;
 }
 
-inline PairSolution sphere_pair(const BodyRef& body_i, const BodyRef& body_j, ContactHistory& history,
-                                ContactCache& cache, const InteractionContext& context) noexcept {
+[[nodiscard]] inline PairSolution sphere_pair(const BodyRef& body_i, const BodyRef& body_j, ContactHistory& history,
+                                              ContactCache& cache, const InteractionContext& context) noexcept {
   PairSolution solution;
   const double radius_i = body_i.semi_axes.x();
   const double radius_j = body_j.semi_axes.x();
@@ -141,8 +131,8 @@ inline PairSolution sphere_pair(const BodyRef& body_i, const BodyRef& body_j, Co
   return solution;
 }
 
-inline PairSolution sphere_wall(const BodyRef& body, const WallPlane& wall, ContactHistory& history,
-                                ContactCache& cache, const InteractionContext& context) noexcept {
+[[nodiscard]] inline PairSolution sphere_wall(const BodyRef& body, const WallPlane& wall, ContactHistory& history,
+                                              ContactCache& cache, const InteractionContext& context) noexcept {
   PairSolution solution;
   const double radius = body.semi_axes.x();
   const double gap = wall.side * (body.centre.z() - wall.position);  // centre height above the wall
@@ -160,21 +150,29 @@ inline PairSolution sphere_wall(const BodyRef& body, const WallPlane& wall, Cont
 
 }  // namespace pair_detail
 
-inline PairSolution solve_pair(const BodyRef& body_i, const BodyRef& body_j, bool spheres, ContactHistory& history,
-                               ContactCache& cache, const InteractionContext& context) noexcept {
+// Two bodies; `spheres` selects the closed-form path. Reads and updates the history's warm
+// start; on contact stores the law's new δ_* in the history and δ in the cache.
+[[nodiscard]] inline PairSolution solve_pair(const BodyRef& body_i, const BodyRef& body_j, bool spheres,
+                                             ContactHistory& history, ContactCache& cache,
+                                             const InteractionContext& context) noexcept {
   if (spheres) return pair_detail::sphere_pair(body_i, body_j, history, cache, context);
   return solve_ellipsoid_pair(body_i, body_j, history, cache, context);
 }
 
-inline PairSolution solve_wall(const BodyRef& body, const WallPlane& wall, bool sphere, ContactHistory& history,
-                               ContactCache& cache, const InteractionContext& context) noexcept {
+// A body against a wall, mirror-image convention: r̂^{I,J} = 2 r̂^I, the wall flat (κ = 0).
+[[nodiscard]] inline PairSolution solve_wall(const BodyRef& body, const WallPlane& wall, bool sphere,
+                                             ContactHistory& history, ContactCache& cache,
+                                             const InteractionContext& context) noexcept {
   if (sphere) return pair_detail::sphere_wall(body, wall, history, cache, context);
   return solve_ellipsoid_wall(body, wall, history, cache, context);
 }
 
-inline PairForces pair_forces(const PairSolution& solution, const Eigen::Vector3d& centre_i, const BodyMotion& motion_i,
-                              const Eigen::Vector3d& centre_j, const BodyMotion& motion_j,
-                              const InteractionContext& context, double dt, ContactHistory& history) noexcept {
+// Forces of a touching contact (solution.status == contact) on both bodies; `centre_j` is J's
+// (image) centre. Updates the history's tangential spring.
+[[nodiscard]] inline PairForces pair_forces(const PairSolution& solution, const Eigen::Vector3d& centre_i,
+                                            const BodyMotion& motion_i, const Eigen::Vector3d& centre_j,
+                                            const BodyMotion& motion_j, const InteractionContext& context, double dt,
+                                            ContactHistory& history) noexcept {
   const Eigen::Vector3d lever_i = solution.point - centre_i;
   const Eigen::Vector3d lever_j = solution.point - centre_j;
   const ContactKinematics kinematics{solution.normal,
@@ -189,9 +187,11 @@ inline PairForces pair_forces(const PairSolution& solution, const Eigen::Vector3
   return forces;
 }
 
-inline WallForces wall_forces(const PairSolution& solution, const Eigen::Vector3d& centre, const BodyMotion& motion,
-                              double wall_velocity, const InteractionContext& context, double dt,
-                              ContactHistory& history) noexcept {
+// A touching body–wall contact; the wall moves along z at `wall_velocity` and does not turn.
+[[nodiscard]] inline WallForces wall_forces(const PairSolution& solution, const Eigen::Vector3d& centre,
+                                            const BodyMotion& motion, double wall_velocity,
+                                            const InteractionContext& context, double dt,
+                                            ContactHistory& history) noexcept {
   const Eigen::Vector3d lever = solution.point - centre;
   const ContactKinematics kinematics{
       solution.normal,
