@@ -270,6 +270,8 @@ std::size_t Simulation::kick_and_check(double half_dt) noexcept {
 void Simulation::compute_forces() {
   const std::size_t count = particles_.size();
   const std::size_t pair_count = pairs_.size();
+  chunk_sums_.assign(pair_chunk_count(), ChunkSums{});  // the pairs' tallies (sum_pair_chunk)
+  std::uint64_t failures = 0;
   if (!parallel()) {
     // One thread: each pair adds to its particles as it is evaluated. The walls go first and the
     // pairs in list order, which is the order gather_pair_forces() sums in, so the bits are the same as
@@ -277,8 +279,6 @@ void Simulation::compute_forces() {
     // Each pair's tallies are added as it is evaluated, in the chunks and order of
     // sum_pair_chunk(), while its result is still in cache.
     for (std::size_t slot = 0; slot < count; ++slot) evaluate_walls_and_reset(slot);
-    chunk_sums_.assign(pair_chunk_count(), ChunkSums{});
-    std::uint64_t failures = 0;
     for (std::size_t index = 0; index < pair_count; ++index) {
       evaluate_pair(index, true);
       tally_pair(index, chunk_sums_[index / kPairChunk], failures);
@@ -294,8 +294,6 @@ void Simulation::compute_forces() {
     for (std::size_t index = 0; index < pair_count; ++index) evaluate_pair(index, false);
   }
   gather_pair_forces();
-  chunk_sums_.assign(pair_chunk_count(), ChunkSums{});
-  std::uint64_t failures = 0;
 #pragma omp parallel for schedule(static) reduction(+ : failures) num_threads(threads_)
   for (std::size_t chunk = 0; chunk < chunk_sums_.size(); ++chunk) chunk_sums_[chunk] = sum_pair_chunk(chunk, failures);
   accumulate(failures);
