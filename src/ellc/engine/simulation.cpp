@@ -105,10 +105,27 @@ void Simulation::prepare_derived_arrays() {
     const auto& axes = particles_.semi_axes[slot];
     is_sphere_[slot] = axes.x() == axes.y() && axes.x() == axes.z();
   }
+  align_sphere_frames();
   omega_world_.assign(count, Eigen::Vector3d::Zero());
   shapes_.assign(count, Ellipsoid(Eigen::Vector3d::Ones()));
   index_pairs_by_particle();
   forget_proven_separations();
+}
+
+// A sphere's orientation has no effect on its contacts or its motion (I is isotropic), so the
+// engine does not track it: the sphere's body frame is the world frame, its orientation the
+// identity, and its angular velocity the world one. Its step then needs no rotation (quaternion
+// update, τ and ω between frames): +20 % for a sphere packing (docs/performance.md, 2026-12-04).
+// A state with another orientation (a packing, an older checkpoint) keeps its world angular
+// velocity; an aligned one is left bit for bit, so restarts stay exact.
+void Simulation::align_sphere_frames() noexcept {
+  auto& p = particles_;
+  const Eigen::Quaterniond identity = Eigen::Quaterniond::Identity();
+  for (std::size_t slot = 0; slot < p.size(); ++slot) {
+    if (is_sphere_[slot] == 0 || p.orientation[slot].coeffs() == identity.coeffs()) continue;
+    p.angular_velocity[slot] = p.orientation[slot] * p.angular_velocity[slot];
+    p.orientation[slot] = identity;
+  }
 }
 
 void Simulation::forget_proven_separations() {
@@ -166,8 +183,11 @@ void Simulation::refresh_body_frames() noexcept {
 
 void Simulation::refresh_body_frame(std::size_t slot) noexcept {
   auto& p = particles_;
+  if (is_sphere_[slot] != 0) {
+    omega_world_[slot] = p.angular_velocity[slot];  // its frame is the world frame
+    return;
+  }
   omega_world_[slot] = p.orientation[slot] * p.angular_velocity[slot];
-  if (is_sphere_[slot] != 0) return;
   // In place (no temporary Ellipsoid and copy); the same bits as building it anew.
   if (shapes_[slot].semi_axes() == p.semi_axes[slot])
     shapes_[slot].set_pose(Pose{p.position[slot], p.orientation[slot]});
@@ -226,7 +246,8 @@ bool Simulation::kick_and_drift(double half_dt) noexcept {
     kick_particle(slot, half_dt, gravity, drag);
     const Eigen::Vector3d before = p.position[slot];
     p.position[slot] += dt * p.velocity[slot];
-    p.orientation[slot] = advance_orientation(p.orientation[slot], p.angular_velocity[slot], dt);
+    if (is_sphere_[slot] == 0)  // a sphere's frame stays the world frame (align_sphere_frames)
+      p.orientation[slot] = advance_orientation(p.orientation[slot], p.angular_velocity[slot], dt);
     // No point of the body moves more than the centre's step plus the rotation angle |ω| dt times
     // the bounding radius; the factors and the 1e-15 cover the rounding of the computed motion.
     const double turn = p.angular_velocity[slot].norm() * dt * (1.0 + 1e-9) + 1e-15;
@@ -240,8 +261,12 @@ bool Simulation::kick_and_drift(double half_dt) noexcept {
 void Simulation::kick_particle(std::size_t slot, double half_dt, const Eigen::Vector3d& gravity, double drag) noexcept {
   auto& p = particles_;
   p.velocity[slot] += half_dt * (p.force[slot] / p.mass[slot] + gravity - drag * p.velocity[slot]);
-  const Eigen::Vector3d torque_body = p.orientation[slot].conjugate() * p.torque[slot];
   Eigen::Vector3d& omega = p.angular_velocity[slot];
+  if (is_sphere_[slot] != 0) {  // body frame = world frame, isotropic I: no rotation, no gyroscopic term
+    omega += half_dt * (p.torque[slot].cwiseQuotient(p.inertia[slot]) - drag * omega);
+    return;
+  }
+  const Eigen::Vector3d torque_body = p.orientation[slot].conjugate() * p.torque[slot];
   omega += half_dt * (angular_acceleration(p.inertia[slot], omega, torque_body) - drag * omega);
 }
 

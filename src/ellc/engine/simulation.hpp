@@ -184,6 +184,7 @@ class Simulation {
   template <typename Io, typename Self>
   static void state_fields(Io& io, Self& self);  // simulation_state.cpp
   void prepare_derived_arrays();                 // sphere flags, body frames, pair index: from the state
+  void align_sphere_frames() noexcept;           // spheres: identity orientation, world-frame ω
   void index_pairs_by_particle();
   void forget_proven_separations();
   [[nodiscard]] bool proven_apart(std::size_t pair_index, double travel) const noexcept {
