@@ -284,7 +284,9 @@ class Particles:
                                "scipy.spatial.transform.Rotation.from_quat takes them")
     semi_axes = property(lambda self: self._field("semi_axes"), doc="(N, 3) semi-axes (a, b, c) of the body axes, µm")
     velocity = property(lambda self: self._field("velocity"), doc="(N, 3) µm/µs")
-    angular_velocity = property(lambda self: self._field("angular_velocity"), doc="(N, 3) rad/µs, body frame")
+    angular_velocity = property(lambda self: self._field("angular_velocity"),
+                                doc="(N, 3) rad/µs, body frame (a sphere's is the world frame: "
+                                    "the engine keeps its orientation at the identity)")
     force = property(lambda self: self._field("force"), doc="(N, 3) contact force of the last step, µN, world frame")
     torque = property(lambda self: self._field("torque"), doc="(N, 3) contact torque of the last step, µN µm")
     mass = property(lambda self: self._field("mass"), doc="(N,) ng (after mass scaling)")
