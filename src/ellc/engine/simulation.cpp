@@ -115,7 +115,7 @@ void Simulation::prepare_derived_arrays() {
 // A sphere's orientation has no effect on its contacts or its motion (I is isotropic), so the
 // engine does not track it: the sphere's body frame is the world frame, its orientation the
 // identity, and its angular velocity the world one. Its step then needs no rotation (quaternion
-// update, τ and ω between frames): +20 % for a sphere packing (docs/performance.md, 2026-12-04).
+// update, τ and ω between frames): 18 % faster against LAMMPS on spheres (docs/performance.md).
 // A state with another orientation (a packing, an older checkpoint) keeps its world angular
 // velocity; an aligned one is left bit for bit, so restarts stay exact.
 void Simulation::align_sphere_frames() noexcept {

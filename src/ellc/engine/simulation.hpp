@@ -183,7 +183,7 @@ class Simulation {
 
   template <typename Io, typename Self>
   static void state_fields(Io& io, Self& self);  // simulation_state.cpp
-  void prepare_derived_arrays();                 // sphere flags, body frames, pair index: from the state
+  void prepare_derived_arrays();                 // sphere flags (frames aligned), body frames, pair index
   void align_sphere_frames() noexcept;           // spheres: identity orientation, world-frame ω
   void index_pairs_by_particle();
   void forget_proven_separations();
