@@ -225,6 +225,7 @@ void run(benchmark::State& state, bool spheres, double& rate, bool spatial_order
   auto simulation = dense(spheres, spatial_order);
   const auto count = static_cast<double>(simulation->particles().size());
   std::int64_t steps = 0;
+  const std::uint64_t taken_before = simulation->pairs_taken_by_other_threads();
   const double cpu_start = process_cpu_seconds();
   const auto start = std::chrono::steady_clock::now();
   for (auto _ : state) {
@@ -244,6 +245,10 @@ void run(benchmark::State& state, bool spheres, double& rate, bool spatial_order
   state.counters["candidate_pairs_per_particle"] = static_cast<double>(simulation->pairs().size()) / count;
   state.counters["narrow_phase_failures"] = static_cast<double>(counts.narrow_phase_failures);
   state.counters["threads_at_end"] = simulation->thread_count();  // the engine's adaptive choice
+  // Share of the pair evaluations a thread took from another's range (the threaded loop's balancing).
+  state.counters["pairs_taken_fraction"] =
+      static_cast<double>(simulation->pairs_taken_by_other_threads() - taken_before) /
+      std::max(1.0, static_cast<double>(simulation->pairs().size()) * static_cast<double>(steps));
   // What this run's simulation holds (resident growth since before it was made), and the peak
   // resident memory of the whole process (the packing's setup included), bytes per particle.
   state.counters["simulation_bytes_per_particle"] = (resident_bytes() - resident_before) / count;

@@ -25,6 +25,7 @@ struct CollidingRun {
   bool adaptive_threads = false;   // the engine's own choice between 1 and `threads`
   std::size_t particles = 100;
   int steps = kThreadSteps;
+  std::vector<double> fixed_pair_cuts{};  // empty: the engine balances the threads' ranges
 };
 
 struct CollidingResult {
@@ -32,6 +33,7 @@ struct CollidingResult {
   std::size_t pairs_proven_apart = 0;  // at the end
   std::size_t pairs = 0;               // in the neighbour list at the end
   double damping_dissipation = 0.0;
+  std::uint64_t pairs_taken = 0;  // by a thread from another's range
 };
 
 CollidingResult run_colliding(const CollidingRun& run) {
@@ -54,6 +56,7 @@ CollidingResult run_colliding(const CollidingRun& run) {
   settings.parallel_threshold = 0;
   settings.skip_proven_separated = run.skip_proven_separated;
   settings.adaptive_threads = run.adaptive_threads;
+  settings.fixed_pair_cuts = run.fixed_pair_cuts;
   double top = 0.0;
   for (std::size_t slot = 0; slot < particles.size(); ++slot)
     top = std::max(top, particles.position[slot].z() + particles.bounding_radius[slot]);
@@ -66,7 +69,8 @@ CollidingResult run_colliding(const CollidingRun& run) {
   }
   omp_set_num_threads(previous);
   EXPECT_GT(contacts, 1000U) << "the test needs many contacts";
-  return {state_bytes(sim), sim.pairs_proven_apart(), sim.pairs().size(), sim.damping_dissipation()};
+  return {state_bytes(sim), sim.pairs_proven_apart(), sim.pairs().size(), sim.damping_dissipation(),
+          sim.pairs_taken_by_other_threads()};
 }
 
 std::string run_with_threads(int threads) { return run_colliding({threads}).state; }
@@ -104,6 +108,33 @@ TEST(EngineDeterminism, OneAndTwoThreadsAgreeOverSeveralPairChunks) {
   EXPECT_GT(a.pairs, 2U * 4096U) << "the test needs a pair list of several chunks";
   EXPECT_GT(a.damping_dissipation, 0.0);
   EXPECT_TRUE(a.state == b.state) << "the energy tallies depend on the thread count";
+}
+
+// Threads own contiguous ranges of the pair list and take pairs from each other's ranges when they
+// run out (simulation.cpp, compute_forces_threaded). Where the cuts lie and who takes what must
+// change nothing: lopsided fixed cuts make the thread with the short range take most of the other's
+// pairs (a particle then sums some of its pairs in the loop and the rest after it), three threads
+// on this machine's cores take pairs whenever one is descheduled, and the pair list spans several
+// tally chunks.
+TEST(EngineDeterminism, ThreadRangesAndTakenPairsGiveTheSameState) {
+  CollidingRun one{1};
+  one.particles = 2500;
+  one.steps = 60;
+  const CollidingResult reference = run_colliding(one);
+  EXPECT_GT(reference.pairs, 2U * 4096U) << "the test needs a pair list of several chunks";
+  CollidingRun lopsided = one;
+  lopsided.threads = 2;
+  lopsided.fixed_pair_cuts = {0.02};
+  const CollidingResult taken = run_colliding(lopsided);
+  EXPECT_GT(taken.pairs_taken, 1000U) << "the thread with the short range should take pairs from the other";
+  EXPECT_TRUE(taken.state == reference.state) << "taking pairs from another thread's range changed the state";
+  CollidingRun three = one;
+  three.threads = 3;
+  EXPECT_TRUE(run_colliding(three).state == reference.state) << "three balanced ranges changed the state";
+  CollidingRun uneven = one;
+  uneven.threads = 3;
+  uneven.fixed_pair_cuts = {0.5, 0.51};  // one nearly empty range
+  EXPECT_TRUE(run_colliding(uneven).state == reference.state) << "an almost empty range changed the state";
 }
 
 // Pairs proven apart are skipped (docs/engine.md): the skipped test would have found them apart,

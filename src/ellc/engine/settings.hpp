@@ -79,6 +79,11 @@ struct EngineSettings {
   // faster (thread_count.hpp): on a machine where other processes keep cores busy, one thread.
   // false: always omp_get_max_threads(). The results are the same bit for bit either way.
   bool adaptive_threads = true;
+  // With threads, the pair list is cut into one range per thread, balanced on measured time
+  // (pair_partition.hpp). Tests fix the cuts here (fractions of the list, 0 < c_1 ≤ … < 1, one
+  // fewer than the threads; empty: balanced) to force idle threads to take others' pairs. The
+  // results are the same bit for bit either way.
+  std::vector<double> fixed_pair_cuts{};
 };
 
 }  // namespace ellc::engine

@@ -1,6 +1,7 @@
 #include "ellc/engine/simulation.hpp"
 
 #include <algorithm>
+#include <atomic>
 #include <charconv>
 #include <chrono>
 #include <cmath>
@@ -148,6 +149,12 @@ void Simulation::index_pairs_by_particle() {
     pairs_of_particle_[fill[pairs_[index].i]++] = entry;
     pairs_of_particle_[fill[pairs_[index].j]++] = entry + 1;
   }
+  pair_span_.assign(count, PairSpan{});
+  for (std::size_t slot = 0; slot < count; ++slot) {
+    const std::uint32_t begin = pairs_of_particle_start_[slot];
+    const std::uint32_t end = pairs_of_particle_start_[slot + 1];
+    if (begin < end) pair_span_[slot] = {pairs_of_particle_[begin] >> 1U, pairs_of_particle_[end - 1] >> 1U};
+  }
   ELLC_ASSERT(invariants::valid_pair_index(pairs_, count, pairs_of_particle_start_, pairs_of_particle_),
               "per-particle pair index inconsistent with the pair list");
 }
@@ -290,38 +297,175 @@ std::size_t Simulation::kick_and_check(double half_dt) noexcept {
   return first_bad;
 }
 
-// Wall contacts per particle and pair contacts per pair, in one parallel region: the two loops
-// write disjoint results, so the first needs no barrier.
+// Wall contacts per particle, then pair contacts per pair.
 void Simulation::compute_forces() {
   const std::size_t count = particles_.size();
-  const std::size_t pair_count = pairs_.size();
   chunk_sums_.assign(pair_chunk_count(), ChunkSums{});  // the pairs' tallies (sum_pair_chunk)
-  std::uint64_t failures = 0;
-  if (!parallel()) {
-    // One thread: each pair adds to its particles as it is evaluated. The walls go first and the
-    // pairs in list order, which is the order gather_pair_forces() sums in, so the bits are the same as
-    // with threads; it saves reading every result back through the per-particle index.
-    // Each pair's tallies are added as it is evaluated, in the chunks and order of
-    // sum_pair_chunk(), while its result is still in cache.
-    for (std::size_t slot = 0; slot < count; ++slot) evaluate_walls_and_reset(slot);
-    for (std::size_t index = 0; index < pair_count; ++index) {
-      evaluate_pair(index, true);
-      tally_pair(index, chunk_sums_[index / kPairChunk], failures);
-    }
-    accumulate(failures);
+  if (parallel()) {
+    compute_forces_threaded();
     return;
   }
-#pragma omp parallel num_threads(threads_)
-  {
-#pragma omp for schedule(static) nowait
-    for (std::size_t slot = 0; slot < count; ++slot) evaluate_walls_and_reset(slot);
-#pragma omp for schedule(dynamic, 256)
-    for (std::size_t index = 0; index < pair_count; ++index) evaluate_pair(index, false);
+  // One thread: each pair adds to its particles as it is evaluated, and its tallies to its chunk
+  // while its result is still in cache. The walls go first and the pairs in list order: the
+  // order every particle's sum and every chunk's tally has with threads too.
+  for (std::size_t slot = 0; slot < count; ++slot) evaluate_walls_and_reset(slot);
+  accumulate(evaluate_pairs_in_order());
+}
+
+// Every pair in list order, each adding to its particles and to its chunk's tallies as it is
+// evaluated; returns the failures.
+std::uint64_t Simulation::evaluate_pairs_in_order() {
+  std::uint64_t failures = 0;
+  for (std::size_t index = 0; index < pairs_.size(); ++index) {
+    evaluate_pair(index, true, true);
+    failures += pair_failed(index) ? 1U : 0U;
+    tally_pair(index, chunk_sums_[index / kPairChunk]);
   }
-  gather_pair_forces();
-#pragma omp parallel for schedule(static) reduction(+ : failures) num_threads(threads_)
-  for (std::size_t chunk = 0; chunk < chunk_sums_.size(); ++chunk) chunk_sums_[chunk] = sum_pair_chunk(chunk, failures);
+  return failures;
+}
+
+int Simulation::range_of_pair(std::size_t index) const noexcept {
+  int range = 0;
+  while (range + 1 < partition_.ranges() && index >= range_start_[static_cast<std::size_t>(range) + 1]) ++range;
+  return range;
+}
+
+// Threads (docs/engine.md, "The threaded pair loop"). Each thread owns one contiguous range of the pair list
+// (pair_partition.hpp) and works through it from the front in blocks of kStealBlock pairs, doing
+// what the one-thread loop does: a particle whose pairs all lie in the range gets their forces
+// added in list order, and the tallies go to the pair chunks. A thread that runs out of work takes
+// blocks from the back of another range (results only). So each range ends at a steal point s:
+// its owner evaluated [start, s), other threads [s, end).
+// After one barrier, in list order, as the one-thread loop would add them:
+//  - a particle whose pairs lie in one range adds the results of its pairs from s on;
+//  - a particle whose pairs straddle a cut adds all its pair results (gather_pair_forces);
+//  - a pair chunk that one owner did not evaluate whole is tallied again from the results.
+// Every sum is the one-thread loop's, in its order: the same bits for any thread count, cuts and
+// steals.
+void Simulation::compute_forces_threaded() {
+  const std::size_t count = particles_.size();
+  const std::size_t pair_count = pairs_.size();
+  if (partition_.ranges() != threads_) {
+    if (settings_.fixed_pair_cuts.size() + 1 == static_cast<std::size_t>(threads_))
+      partition_.fix(settings_.fixed_pair_cuts);
+    else
+      partition_.reset(threads_);
+  }
+  const auto ranges = static_cast<std::size_t>(threads_);
+  range_start_.resize(ranges + 1);
+  for (std::size_t k = 0; k <= ranges; ++k) range_start_[k] = partition_.first_pair(static_cast<int>(k), pair_count);
+  // Per range, the blocks not yet taken, [front, back), packed as back << 32 | front; the ranges'
+  // claims a cache line apart.
+  range_claims_.assign(ranges * kClaimStride, 0);
+  for (std::size_t k = 0; k < ranges; ++k) {
+    const std::uint64_t blocks = (range_start_[k + 1] - range_start_[k] + kStealBlock - 1) / kStealBlock;
+    range_claims_[k * kClaimStride] = blocks << 32U;
+  }
+  range_seconds_.assign(ranges, 0.0);
+  std::uint64_t failures = 0;
+  std::uint64_t taken = 0;  // pairs evaluated by a thread that does not own their range
+  int team_size = threads_;
+#pragma omp parallel num_threads(threads_) reduction(+ : failures, taken)
+  {
+    // A team smaller than asked for would leave ranges without an owner. It does not happen
+    // without nesting, but if it did, every pair is evaluated after the region.
+    const bool team_complete = omp_get_num_threads() == threads_;
+    if (omp_get_thread_num() == 0) team_size = omp_get_num_threads();
+#pragma omp for schedule(static)
+    for (std::size_t slot = 0; slot < count; ++slot) evaluate_walls_and_reset(slot);
+    if (team_complete) {
+      const auto own = static_cast<std::size_t>(omp_get_thread_num());
+      const auto start = std::chrono::steady_clock::now();
+      const std::size_t lo = range_start_[own];
+      const std::size_t hi = range_start_[own + 1];
+      // The chunks that lie in this range alone (others' owners write the rest).
+      const std::size_t first_chunk = (lo + kPairChunk - 1) / kPairChunk;
+      const std::size_t end_chunk = hi == pair_count ? chunk_sums_.size() : hi / kPairChunk;
+      std::size_t block = 0;
+      while (claim_block(own, true, block)) {
+        const std::size_t end = std::min(hi, lo + (block + 1) * kStealBlock);
+        for (std::size_t index = lo + block * kStealBlock; index < end; ++index) {
+          const PairSpan span_i = pair_span_[pairs_[index].i];
+          const PairSpan span_j = pair_span_[pairs_[index].j];
+          evaluate_pair(index, span_i.first >= lo && span_i.last < hi, span_j.first >= lo && span_j.last < hi);
+          failures += pair_failed(index) ? 1U : 0U;
+          const std::size_t chunk = index / kPairChunk;
+          if (chunk >= first_chunk && chunk < end_chunk)
+            tally_pair(index, chunk_sums_[chunk]);  // redone below if stolen from
+        }
+      }
+      range_seconds_[own] = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      for (std::size_t other = (own + 1) % ranges; other != own; other = (other + 1) % ranges) {
+        while (claim_block(other, false, block)) {
+          const std::size_t first = range_start_[other] + block * kStealBlock;
+          const std::size_t end = std::min(range_start_[other + 1], first + kStealBlock);
+          for (std::size_t index = first; index < end; ++index) {
+            evaluate_pair(index, false, false);
+            failures += pair_failed(index) ? 1U : 0U;
+          }
+          taken += end - first;
+        }
+      }
+    }
+#pragma omp barrier
+    if (team_complete) {
+#pragma omp for schedule(static) nowait
+      for (std::size_t slot = 0; slot < count; ++slot) {
+        const PairSpan span = pair_span_[slot];
+        if (span.first > span.last) continue;
+        const int range = range_of_pair(span.first);
+        if (range != range_of_pair(span.last))
+          gather_pair_forces(slot, 0);
+        else if (span.last >= steal_point(range))
+          gather_pair_forces(slot, steal_point(range));
+      }
+#pragma omp for schedule(static)
+      for (std::size_t chunk = 0; chunk < chunk_sums_.size(); ++chunk) {
+        const std::size_t first = chunk * kPairChunk;
+        const std::size_t last = std::min(pair_count, first + kPairChunk) - 1;
+        const int range = range_of_pair(first);
+        if (range != range_of_pair(last) || last >= steal_point(range)) chunk_sums_[chunk] = sum_pair_chunk(chunk);
+      }
+    }
+  }
+  if (team_size != threads_) {  // the one-thread loop's pairs (not seen in practice)
+    chunk_sums_.assign(pair_chunk_count(), ChunkSums{});
+    failures = evaluate_pairs_in_order();
+  } else {
+    // Each range's time as if its owner had evaluated all of it, at the pace it kept.
+    for (std::size_t k = 0; k < ranges; ++k) {
+      const auto owned = static_cast<double>(steal_point(static_cast<int>(k)) - range_start_[k]);
+      const auto all = static_cast<double>(range_start_[k + 1] - range_start_[k]);
+      if (owned > 0.0) range_seconds_[k] *= all / owned;
+    }
+    partition_.record(range_seconds_);
+    pairs_taken_by_other_threads_ += taken;
+  }
   accumulate(failures);
+}
+
+// Takes the next block of range `range` from its front (its owner) or its back (another thread);
+// false when none is left.
+bool Simulation::claim_block(std::size_t range, bool from_front, std::size_t& block) noexcept {
+  std::atomic_ref<std::uint64_t> claims(range_claims_[range * kClaimStride]);
+  std::uint64_t seen = claims.load(std::memory_order_relaxed);
+  while (true) {
+    const std::uint64_t front = seen & 0xffffffffU;
+    const std::uint64_t back = seen >> 32U;
+    if (front >= back) return false;
+    const std::uint64_t wanted = from_front ? seen + 1 : seen - (std::uint64_t{1} << 32U);
+    if (claims.compare_exchange_weak(seen, wanted, std::memory_order_relaxed)) {
+      block = from_front ? front : back - 1;
+      return true;
+    }
+  }
+}
+
+// After the threaded pair loop: the first pair of range `range` its owner did not evaluate.
+std::size_t Simulation::steal_point(int range) const noexcept {
+  const auto k = static_cast<std::size_t>(range);
+  const std::uint64_t front = range_claims_[k * kClaimStride] & 0xffffffffU;
+  return std::min(range_start_[k + 1], range_start_[k] + front * kStealBlock);
 }
 
 // Wall contacts of one particle; also starts the particle's force and torque sums with them.
@@ -377,7 +521,7 @@ void Simulation::evaluate_walls_and_reset(std::size_t slot) {
   p.torque[slot] = torque;
 }
 
-void Simulation::evaluate_pair(std::size_t index, bool add_to_particles) {
+void Simulation::evaluate_pair(std::size_t index, bool add_to_i, bool add_to_j) {
   auto& p = particles_;
   PairSlot& pair = pairs_[index];
   pair_reported_[index] = 0;
@@ -437,56 +581,56 @@ void Simulation::evaluate_pair(std::size_t index, bool add_to_particles) {
     result.damping_dissipation = forces.contact.damping_dissipation;
     result.friction_dissipation = forces.contact.friction_dissipation;
   }
-  if (add_to_particles) {  // the operations of gather_pair_forces(), zeros included (they can turn -0 into +0)
+  // The operations of gather_pair_forces(), zeros included (they can turn -0 into +0).
+  if (add_to_i) {
     p.force[i] -= result.force_on_j;
     p.torque[i] += result.torque_i;
+  }
+  if (add_to_j) {
     p.force[j] += result.force_on_j;
     p.torque[j] += result.torque_j;
   }
 }
 
-// With threads, where pair forces meet: each particle adds its pair results to its wall forces
-// in pair-list order, the order a serial sweep over the list would use (and the one-thread path
-// of compute_forces does use), so the sums are the same bits for any thread count.
-void Simulation::gather_pair_forces() {
+// Adds the results of particle `slot`'s pairs from pair `first_pair` on to its force and torque,
+// in pair-list order: the order in which the one-thread loop adds them (after the threaded pair
+// loop, for the pairs its owner did not add).
+void Simulation::gather_pair_forces(std::size_t slot, std::size_t first_pair) {
   auto& p = particles_;
-#pragma omp parallel for schedule(static) num_threads(threads_)
-  for (std::size_t slot = 0; slot < p.size(); ++slot) {
-    Eigen::Vector3d force = p.force[slot];
-    Eigen::Vector3d torque = p.torque[slot];
-    for (std::uint32_t k = pairs_of_particle_start_[slot]; k < pairs_of_particle_start_[slot + 1]; ++k) {
-      const std::uint32_t entry = pairs_of_particle_[k];
-      if (pair_reported_[entry >> 1U] == 0) continue;
-      const PairResult& result = pair_results_[entry >> 1U];
-      if (!result.contact) continue;
-      if ((entry & 1U) == 0U) {
-        force -= result.force_on_j;
-        torque += result.torque_i;
-      } else {
-        force += result.force_on_j;
-        torque += result.torque_j;
-      }
+  Eigen::Vector3d force = p.force[slot];
+  Eigen::Vector3d torque = p.torque[slot];
+  for (std::uint32_t k = pairs_of_particle_start_[slot]; k < pairs_of_particle_start_[slot + 1]; ++k) {
+    const std::uint32_t entry = pairs_of_particle_[k];
+    if ((entry >> 1U) < first_pair) continue;
+    if (pair_reported_[entry >> 1U] == 0) continue;
+    const PairResult& result = pair_results_[entry >> 1U];
+    if (!result.contact) continue;
+    if ((entry & 1U) == 0U) {
+      force -= result.force_on_j;
+      torque += result.torque_i;
+    } else {
+      force += result.force_on_j;
+      torque += result.torque_j;
     }
-    p.force[slot] = force;
-    p.torque[slot] = torque;
   }
+  p.force[slot] = force;
+  p.torque[slot] = torque;
 }
 
-// Adds pair `index`'s tallies of this step to `sums` and its failure to `failures`.
-void Simulation::tally_pair(std::size_t index, ChunkSums& sums, std::uint64_t& failures) const noexcept {
+// Adds pair `index`'s tallies of this step to `sums`.
+void Simulation::tally_pair(std::size_t index, ChunkSums& sums) const noexcept {
   if (pair_reported_[index] == 0) return;
   const PairResult& result = pair_results_[index];
   sums.released += result.released_work;
   sums.damping += result.damping_dissipation;
   sums.friction += result.friction_dissipation;
-  failures += result.failed ? 1U : 0U;
 }
 
 // The tallies of one fixed chunk of the pair list, summed in list order.
-Simulation::ChunkSums Simulation::sum_pair_chunk(std::size_t chunk, std::uint64_t& failures) const noexcept {
+Simulation::ChunkSums Simulation::sum_pair_chunk(std::size_t chunk) const noexcept {
   ChunkSums sums;
   const std::size_t end = std::min(pairs_.size(), (chunk + 1) * kPairChunk);
-  for (std::size_t index = chunk * kPairChunk; index < end; ++index) tally_pair(index, sums, failures);
+  for (std::size_t index = chunk * kPairChunk; index < end; ++index) tally_pair(index, sums);
   return sums;
 }
 

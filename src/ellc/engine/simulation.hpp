@@ -21,6 +21,7 @@
 #include "ellc/contact/contact_size.hpp"
 #include "ellc/contact/pair_contact.hpp"
 #include "ellc/engine/pair_map.hpp"
+#include "ellc/engine/pair_partition.hpp"
 #include "ellc/engine/particles.hpp"
 #include "ellc/engine/settings.hpp"
 #include "ellc/engine/thread_count.hpp"
@@ -115,6 +116,9 @@ class Simulation {
   [[nodiscard]] double skin() const noexcept { return skin_; }  // the neighbour list's, µm
   // Threads the next step runs on (settings().adaptive_threads; a diagnostic).
   [[nodiscard]] int thread_count() const noexcept { return threads_; }
+  // Pair evaluations since the start that a thread took from another thread's range of the pair
+  // list (the threaded loop's load balancing; a diagnostic).
+  [[nodiscard]] std::uint64_t pairs_taken_by_other_threads() const noexcept { return pairs_taken_by_other_threads_; }
   // Candidate pairs currently proven apart, whose test the next step skips (a diagnostic).
   [[nodiscard]] std::size_t pairs_proven_apart() const noexcept;
 
@@ -197,9 +201,29 @@ class Simulation {
   [[nodiscard]] std::size_t kick_and_check(double half_dt) noexcept;
   void kick_particle(std::size_t slot, double half_dt, const Eigen::Vector3d& gravity, double drag) noexcept;
   void compute_forces();
-  void evaluate_pair(std::size_t index, bool add_to_particles);
+  void compute_forces_threaded();
+  [[nodiscard]] std::uint64_t evaluate_pairs_in_order();
+  // add_to_i / add_to_j: add the pair's force and torque to that particle right away (the thread
+  // evaluating the pair is the only one that adds to it this step).
+  void evaluate_pair(std::size_t index, bool add_to_i, bool add_to_j);
   void evaluate_walls_and_reset(std::size_t slot);
-  void gather_pair_forces();
+  void gather_pair_forces(std::size_t slot, std::size_t first_pair);
+  // The first and last pair (list indices) of each particle; first > last: no pairs.
+  struct PairSpan {
+    std::uint32_t first = 1;
+    std::uint32_t last = 0;
+  };
+  // The threaded pair loop's ranges (pair_partition.hpp): the one that holds pair `index`, a
+  // block of a range taken by its owner (front) or another thread (back), and after the loop
+  // the first pair of a range its owner did not evaluate.
+  [[nodiscard]] int range_of_pair(std::size_t index) const noexcept;
+  [[nodiscard]] bool claim_block(std::size_t range, bool from_front, std::size_t& block) noexcept;
+  [[nodiscard]] std::size_t steal_point(int range) const noexcept;
+  static constexpr std::size_t kStealBlock = 64;  // pairs
+  static constexpr std::size_t kClaimStride = 8;  // one claim per 64-byte cache line
+  [[nodiscard]] bool pair_failed(std::size_t index) const noexcept {
+    return pair_reported_[index] != 0 && pair_results_[index].failed;
+  }
   struct ChunkSums {
     double released = 0.0;
     double damping = 0.0;
@@ -208,8 +232,8 @@ class Simulation {
   // The pair list's tallies are summed in fixed chunks, so that threads give the same bits.
   static constexpr std::size_t kPairChunk = 4096;
   [[nodiscard]] std::size_t pair_chunk_count() const noexcept { return (pairs_.size() + kPairChunk - 1) / kPairChunk; }
-  void tally_pair(std::size_t index, ChunkSums& sums, std::uint64_t& failures) const noexcept;
-  [[nodiscard]] ChunkSums sum_pair_chunk(std::size_t chunk, std::uint64_t& failures) const noexcept;
+  void tally_pair(std::size_t index, ChunkSums& sums) const noexcept;
+  [[nodiscard]] ChunkSums sum_pair_chunk(std::size_t chunk) const noexcept;
   void accumulate(std::uint64_t pair_failures);
   [[noreturn]] void report_runaway(std::size_t first_bad) const;
   void choose_threads() noexcept;
@@ -249,7 +273,15 @@ class Simulation {
   // The pairs of each particle in pair-list order (CSR): entry = 2 × pair index + (particle is j).
   std::vector<std::uint32_t> pairs_of_particle_start_;
   std::vector<std::uint32_t> pairs_of_particle_;
+  std::vector<PairSpan> pair_span_;  // per particle, from the same index
   std::vector<ChunkSums> chunk_sums_;
+  // The threaded pair loop's contiguous ranges: their first pairs this step, and their cuts,
+  // balanced on the time each range took. Not state: only the speed depends on it.
+  PairPartition partition_;
+  std::vector<std::size_t> range_start_;
+  std::vector<std::uint64_t> range_claims_;  // per range, at kClaimStride: blocks left (claim_block)
+  std::vector<double> range_seconds_;
+  std::uint64_t pairs_taken_by_other_threads_ = 0;
   std::array<std::vector<WallContact>, 2> wall_history_;  // per particle slot
   std::array<std::vector<WallResult>, 2> wall_results_;
   // 1: wall_results_[w][slot] is this step's; 0: empty, and then the wall contact is not active
