@@ -83,7 +83,7 @@ Simulation::Simulation(const EngineSettings& settings, ParticleSet particles, co
   skin_ = settings_.skin > 0.0 ? settings_.skin : default_skin(particles_, settings_.box);
   rebuild_neighbours();
   refresh_body_frames();
-  compute_forces();
+  (void)compute_forces(SecondKick{});  // the forces of the first half kick
 }
 
 void Simulation::check_species() const {
@@ -227,12 +227,11 @@ void Simulation::step() {
     refresh_body_frames();  // positions were wrapped into the box
   }
   std::array<double, 2> force_before{walls_[0].force.z(), walls_[1].force.z()};
-  compute_forces();
+  const std::size_t runaway = compute_forces(SecondKick{true, half_dt});
   // The walls moved by v dt under the average of the forces at both ends of the step (the same
   // trapezoid the two half kicks give the particles' kinetic energy).
   for (int w = 0; w < 2; ++w)
     walls_[w].work -= 0.5 * (force_before[w] + walls_[w].force.z()) * walls_[w].velocity * settings_.dt;
-  const std::size_t runaway = kick_and_check(half_dt);
   if (settings_.adaptive_threads && !stale && particles_.size() > settings_.parallel_threshold)
     thread_choice_.record(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
   if (runaway < particles_.size()) report_runaway(runaway);
@@ -277,39 +276,39 @@ void Simulation::kick_particle(std::size_t slot, double half_dt, const Eigen::Ve
   omega += half_dt * (angular_acceleration(p.inertia[slot], omega, torque_body) - drag * omega);
 }
 
-// Second half kick; returns the first slot with a non-finite or runaway velocity (size() if none).
+// Second half kick of every particle, on one thread; returns the first slot with a non-finite or
+// runaway velocity (size() if none).
 std::size_t Simulation::kick_and_check(double half_dt) noexcept {
-  const std::size_t count = particles_.size();
-  const Eigen::Vector3d gravity = settings_.gravity;
-  const double drag = settings_.drag_rate;
-  const double limit = settings_.max_speed;
-  const auto& p = particles_;
-  std::size_t first_bad = count;
-#pragma omp parallel for schedule(static) reduction(min : first_bad) num_threads(threads_) if (parallel())
-  for (std::size_t slot = 0; slot < count; ++slot) {
-    kick_particle(slot, half_dt, gravity, drag);
-    const double speed = p.velocity[slot].norm();
-    const double spin_speed = p.angular_velocity[slot].norm() * p.bounding_radius[slot];
-    const bool bad = !std::isfinite(speed) || !std::isfinite(spin_speed) || !p.position[slot].allFinite() ||
-                     speed > limit || spin_speed > limit;
-    if (bad && slot < first_bad) first_bad = slot;
-  }
+  std::size_t first_bad = particles_.size();
+  for (std::size_t slot = 0; slot < particles_.size(); ++slot)
+    if (kick_and_check_particle(slot, half_dt) && slot < first_bad) first_bad = slot;
   return first_bad;
 }
 
-// Wall contacts per particle, then pair contacts per pair.
-void Simulation::compute_forces() {
+// Second half kick of one particle; whether its motion is now non-finite or runaway.
+bool Simulation::kick_and_check_particle(std::size_t slot, double half_dt) noexcept {
+  const auto& p = particles_;
+  const double limit = settings_.max_speed;
+  kick_particle(slot, half_dt, settings_.gravity, settings_.drag_rate);
+  const double speed = p.velocity[slot].norm();
+  const double spin_speed = p.angular_velocity[slot].norm() * p.bounding_radius[slot];
+  return !std::isfinite(speed) || !std::isfinite(spin_speed) || !p.position[slot].allFinite() || speed > limit ||
+         spin_speed > limit;
+}
+
+// Wall contacts per particle, then pair contacts per pair; with `kick.apply`, then each particle's
+// second half kick. Returns the first slot whose motion the kick made non-finite or runaway
+// (size() if none, or without the kick).
+std::size_t Simulation::compute_forces(SecondKick kick) {
   const std::size_t count = particles_.size();
   chunk_sums_.assign(pair_chunk_count(), ChunkSums{});  // the pairs' tallies (sum_pair_chunk)
-  if (parallel()) {
-    compute_forces_threaded();
-    return;
-  }
+  if (parallel()) return compute_forces_threaded(kick);
   // One thread: each pair adds to its particles as it is evaluated, and its tallies to its chunk
   // while its result is still in cache. The walls go first and the pairs in list order: the
   // order every particle's sum and every chunk's tally has with threads too.
   for (std::size_t slot = 0; slot < count; ++slot) evaluate_walls_and_reset(slot);
   accumulate(evaluate_pairs_in_order());
+  return kick.apply ? kick_and_check(kick.half_dt) : count;
 }
 
 // Every pair in list order, each adding to its particles and to its chunk's tallies as it is
@@ -330,19 +329,22 @@ int Simulation::range_of_pair(std::size_t index) const noexcept {
   return range;
 }
 
-// Threads (docs/engine.md, "The threaded pair loop"). Each thread owns one contiguous range of the pair list
-// (pair_partition.hpp) and works through it from the front in blocks of kStealBlock pairs, doing
-// what the one-thread loop does: a particle whose pairs all lie in the range gets their forces
-// added in list order, and the tallies go to the pair chunks. A thread that runs out of work takes
-// blocks from the back of another range (results only). So each range ends at a steal point s:
-// its owner evaluated [start, s), other threads [s, end).
+// Threads (docs/engine.md, "The threaded pair loop"). Each thread owns one contiguous range of the
+// pair list (pair_partition.hpp) and the particles whose first pair lies in it (a particle without
+// pairs: by slot). It evaluates its particles' walls, which starts their sums, then works through
+// its range from the front in blocks of kStealBlock pairs, doing what the one-thread loop does: a
+// particle whose pairs all lie in the range gets their forces added in list order, and the
+// tallies go to the pair chunks. A thread that runs out of work takes blocks from the back of
+// another range (results only). So each range ends at a steal point s: its owner evaluated
+// [start, s), other threads [s, end).
 // After one barrier, in list order, as the one-thread loop would add them:
 //  - a particle whose pairs lie in one range adds the results of its pairs from s on;
 //  - a particle whose pairs straddle a cut adds all its pair results (gather_pair_forces);
-//  - a pair chunk that one owner did not evaluate whole is tallied again from the results.
+//  - a pair chunk that one owner did not evaluate whole is tallied again from the results;
+// and each particle, its force complete, takes its second half kick.
 // Every sum is the one-thread loop's, in its order: the same bits for any thread count, cuts and
-// steals.
-void Simulation::compute_forces_threaded() {
+// steals. Three barriers a step: after the drift, after the pairs, at the end.
+std::size_t Simulation::compute_forces_threaded(SecondKick kick) {
   const std::size_t count = particles_.size();
   const std::size_t pair_count = pairs_.size();
   if (partition_.ranges() != threads_) {
@@ -364,18 +366,22 @@ void Simulation::compute_forces_threaded() {
   range_seconds_.assign(ranges, 0.0);
   std::uint64_t failures = 0;
   std::uint64_t taken = 0;  // pairs evaluated by a thread that does not own their range
+  std::size_t first_bad = count;
   int team_size = threads_;
-#pragma omp parallel num_threads(threads_) reduction(+ : failures, taken)
+#pragma omp parallel num_threads(threads_) reduction(+ : failures, taken) reduction(min : first_bad)
   {
     // A team smaller than asked for would leave ranges without an owner. It does not happen
     // without nesting, but if it did, every pair is evaluated after the region.
     const bool team_complete = omp_get_num_threads() == threads_;
     if (omp_get_thread_num() == 0) team_size = omp_get_num_threads();
+    if (!team_complete) {
 #pragma omp for schedule(static)
-    for (std::size_t slot = 0; slot < count; ++slot) evaluate_walls_and_reset(slot);
-    if (team_complete) {
+      for (std::size_t slot = 0; slot < count; ++slot) evaluate_walls_and_reset(slot);
+    } else {
       const auto own = static_cast<std::size_t>(omp_get_thread_num());
       const auto start = std::chrono::steady_clock::now();
+      for (std::size_t slot = 0; slot < count; ++slot)
+        if (owner_of_particle(slot) == own) evaluate_walls_and_reset(slot);
       const std::size_t lo = range_start_[own];
       const std::size_t hi = range_start_[own + 1];
       // The chunks that lie in this range alone (others' owners write the rest).
@@ -406,42 +412,51 @@ void Simulation::compute_forces_threaded() {
           taken += end - first;
         }
       }
-    }
 #pragma omp barrier
-    if (team_complete) {
 #pragma omp for schedule(static) nowait
-      for (std::size_t slot = 0; slot < count; ++slot) {
-        const PairSpan span = pair_span_[slot];
-        if (span.first > span.last) continue;
-        const int range = range_of_pair(span.first);
-        if (range != range_of_pair(span.last))
-          gather_pair_forces(slot, 0);
-        else if (span.last >= steal_point(range))
-          gather_pair_forces(slot, steal_point(range));
-      }
-#pragma omp for schedule(static)
       for (std::size_t chunk = 0; chunk < chunk_sums_.size(); ++chunk) {
         const std::size_t first = chunk * kPairChunk;
         const std::size_t last = std::min(pair_count, first + kPairChunk) - 1;
         const int range = range_of_pair(first);
         if (range != range_of_pair(last) || last >= steal_point(range)) chunk_sums_[chunk] = sum_pair_chunk(chunk);
       }
+#pragma omp for schedule(static) nowait
+      for (std::size_t slot = 0; slot < count; ++slot) {
+        const PairSpan span = pair_span_[slot];
+        if (span.first <= span.last) {
+          const int range = range_of_pair(span.first);
+          if (range != range_of_pair(span.last))
+            gather_pair_forces(slot, 0);
+          else if (span.last >= steal_point(range))
+            gather_pair_forces(slot, steal_point(range));
+        }
+        if (kick.apply && kick_and_check_particle(slot, kick.half_dt) && slot < first_bad) first_bad = slot;
+      }
     }
   }
-  if (team_size != threads_) {  // the one-thread loop's pairs (not seen in practice)
+  if (team_size != threads_) {  // the one-thread loop's pairs and kicks (not seen in practice)
     chunk_sums_.assign(pair_chunk_count(), ChunkSums{});
-    failures = evaluate_pairs_in_order();
-  } else {
-    // Each range's time as if its owner had evaluated all of it, at the pace it kept.
-    for (std::size_t k = 0; k < ranges; ++k) {
-      const auto owned = static_cast<double>(steal_point(static_cast<int>(k)) - range_start_[k]);
-      const auto all = static_cast<double>(range_start_[k + 1] - range_start_[k]);
-      if (owned > 0.0) range_seconds_[k] *= all / owned;
-    }
-    partition_.record(range_seconds_);
-    pairs_taken_by_other_threads_ += taken;
+    accumulate(evaluate_pairs_in_order());
+    return kick.apply ? kick_and_check(kick.half_dt) : count;
   }
+  // Each range's time as if its owner had evaluated all of it, at the pace it kept.
+  for (std::size_t k = 0; k < ranges; ++k) {
+    const auto owned = static_cast<double>(steal_point(static_cast<int>(k)) - range_start_[k]);
+    const auto all = static_cast<double>(range_start_[k + 1] - range_start_[k]);
+    if (owned > 0.0) range_seconds_[k] *= all / owned;
+  }
+  partition_.record(range_seconds_);
+  pairs_taken_by_other_threads_ += taken;
   accumulate(failures);
+  return kick.apply ? first_bad : count;
+}
+
+// The thread that evaluates particle `slot`'s walls in the threaded loop: the owner of the range of
+// its first pair, or for a particle without pairs one by slot.
+std::size_t Simulation::owner_of_particle(std::size_t slot) const noexcept {
+  const PairSpan span = pair_span_[slot];
+  if (span.first <= span.last) return static_cast<std::size_t>(range_of_pair(span.first));
+  return slot * static_cast<std::size_t>(partition_.ranges()) / particles_.size();
 }
 
 // Takes the next block of range `range` from its front (its owner) or its back (another thread);

@@ -200,8 +200,16 @@ class Simulation {
   [[nodiscard]] bool kick_and_drift(double half_dt) noexcept;
   [[nodiscard]] std::size_t kick_and_check(double half_dt) noexcept;
   void kick_particle(std::size_t slot, double half_dt, const Eigen::Vector3d& gravity, double drag) noexcept;
-  void compute_forces();
-  void compute_forces_threaded();
+  // The second half kick, given to compute_forces() so that threads kick each particle as soon
+  // as its force is complete.
+  struct SecondKick {
+    bool apply = false;
+    double half_dt = 0.0;
+  };
+  std::size_t compute_forces(SecondKick kick);
+  std::size_t compute_forces_threaded(SecondKick kick);
+  [[nodiscard]] std::size_t owner_of_particle(std::size_t slot) const noexcept;
+  [[nodiscard]] bool kick_and_check_particle(std::size_t slot, double half_dt) noexcept;
   [[nodiscard]] std::uint64_t evaluate_pairs_in_order();
   // add_to_i / add_to_j: add the pair's force and torque to that particle right away (the thread
   // evaluating the pair is the only one that adds to it this step).
