@@ -173,7 +173,9 @@ void Simulation::rebuild_neighbours() {
   find_candidate_pairs(particles_, settings_.box, skin_, parallel(), spare_pairs_);
   released_work_ += carry_over_history(pairs_, spare_pairs_, parallel());
   std::swap(pairs_, spare_pairs_);  // the old list's storage serves the next rebuild
-  pair_results_.assign(pairs_.size(), PairResult{});
+  // Only the flags are cleared: every reader of a result checks its flag first, and every step
+  // writes the results it flags (clearing 104 bytes a pair took 0.2 ms a rebuild, serially).
+  pair_results_.resize(pairs_.size());
   pair_reported_.assign(pairs_.size(), 0);
   index_pairs_by_particle();
   forget_proven_separations();
