@@ -111,7 +111,7 @@ TEST(EngineDeterminism, OneAndTwoThreadsAgreeOverSeveralPairChunks) {
 }
 
 // Threads own contiguous ranges of the pair list and take pairs from each other's ranges when they
-// run out (simulation.cpp, compute_forces_threaded). Where the cuts lie and who takes what must
+// run out (simulation_forces.cpp, compute_forces_threaded). Where the cuts lie and who takes what must
 // change nothing: lopsided fixed cuts make the thread with the short range take most of the other's
 // pairs (a particle then sums some of its pairs in the loop and the rest after it), three threads
 // on this machine's cores take pairs whenever one is descheduled, and the pair list spans several

@@ -1,11 +1,13 @@
 // The pair loop shared by two threads: what the TSan run of scripts/sanitizers.sh relies on.
 //
-// Simulation::compute_forces() hands the pair list out in chunks of 256 (schedule(dynamic)). The
-// 100-body runs of test_determinism.cpp have about 380 pairs, and under TSan the first thread is
-// through them before the second has joined the parallel region (it starts 0.1-0.3 ms later
-// there): the second thread evaluates no pair, and a race in evaluate_pair() would go unseen.
-// A dense packing of 1000 bodies has thousands of pairs every step, so both threads evaluate
-// pairs in the same step; the states after one and after two threads must be the same bits.
+// The threaded pair loop (simulation_forces.cpp) gives each thread a range of the pair list, and a
+// thread that has finished takes 64-pair blocks from the back of the others. The 100-body runs of
+// determinism_test.cpp have about 380 pairs, and under TSan the first thread can be through its
+// range and the other's before the second has joined the parallel region (it starts 0.1-0.3 ms
+// later there): the second thread then evaluates no pair, and a race in evaluate_pair() would go
+// unseen. A dense packing of 1000 bodies has thousands of pairs every step, so both threads
+// evaluate pairs in the same step; the states after one and after two threads must be the same
+// bits.
 
 #include <gtest/gtest.h>
 #include <omp.h>
@@ -18,7 +20,7 @@ namespace ellc::engine {
 namespace {
 
 constexpr int kSteps = 100;
-constexpr std::size_t kChunk = 256;  // the pair loop's dynamic chunk (simulation.cpp)
+constexpr std::size_t kChunk = 256;  // pairs: four of the threaded loop's blocks (simulation_forces.cpp)
 
 struct DenseRun {
   std::string state;
