@@ -26,6 +26,7 @@ struct CollidingRun {
   std::size_t particles = 100;
   int steps = kThreadSteps;
   std::vector<double> fixed_pair_cuts{};  // empty: the engine balances the threads' ranges
+  bool nested = false;                    // step inside an outer parallel region: the engine's regions get one thread
 };
 
 struct CollidingResult {
@@ -62,10 +63,33 @@ CollidingResult run_colliding(const CollidingRun& run) {
     top = std::max(top, particles.position[slot].z() + particles.bounding_radius[slot]);
   Simulation sim(settings, particles, {Wall{0.0, 0.0, 1, {}}, Wall{top, -0.5, -1, {}}});
   std::size_t contacts = 0;
-  for (int step = 0; step < run.steps; ++step) {
-    if (run.alternate_threads) omp_set_num_threads(step % 2 == 0 ? 1 : run.threads);
-    sim.step();
-    contacts += sim.contact_counts().particle_contacts;
+  const auto run_steps = [&] {
+    for (int step = 0; step < run.steps; ++step) {
+      if (run.alternate_threads) omp_set_num_threads(step % 2 == 0 ? 1 : run.threads);
+      sim.step();
+      contacts += sim.contact_counts().particle_contacts;
+    }
+  };
+  if (run.nested) {
+    const int levels = omp_get_max_active_levels();
+    omp_set_max_active_levels(1);
+    int inner_team = 0;
+#pragma omp parallel num_threads(2)
+    {
+#pragma omp single
+      {
+#pragma omp parallel num_threads(run.threads)
+        {
+#pragma omp single
+          inner_team = omp_get_num_threads();
+        }
+        run_steps();
+      }
+    }
+    omp_set_max_active_levels(levels);
+    EXPECT_EQ(inner_team, 1) << "a nested region should get one thread, fewer than the engine asks for";
+  } else {
+    run_steps();
   }
   omp_set_num_threads(previous);
   EXPECT_GT(contacts, 1000U) << "the test needs many contacts";
@@ -135,6 +159,15 @@ TEST(EngineDeterminism, ThreadRangesAndTakenPairsGiveTheSameState) {
   uneven.threads = 3;
   uneven.fixed_pair_cuts = {0.5, 0.51};  // one nearly empty range
   EXPECT_TRUE(run_colliding(uneven).state == reference.state) << "an almost empty range changed the state";
+}
+
+// A parallel region may get fewer threads than it asks for (nested in another region, or under
+// OMP_DYNAMIC): the threaded pair loop then has ranges without an owner and evaluates the pairs
+// after its region, as one thread does (compute_forces_threaded). The state must be the same.
+TEST(EngineDeterminism, ASmallerTeamThanAskedForGivesTheSameState) {
+  CollidingRun nested{2};
+  nested.nested = true;
+  EXPECT_TRUE(run_colliding(nested).state == run_with_threads(1)) << "a one-thread team changed the state";
 }
 
 // Pairs proven apart are skipped (docs/engine.md): the skipped test would have found them apart,

@@ -64,14 +64,13 @@ class PairPartition {
     std::size_t range = 0;
     double cost_before = 0.0;  // cost up to cuts_[range]
     target_ = cuts_;
-    std::vector<double>& target = target_;
     for (std::size_t k = 1; k < count; ++k) {
       const double wanted = total * static_cast<double>(k) / static_cast<double>(count);
       while (range + 1 < count && cost_before + seconds[range] < wanted) cost_before += seconds[range++];
       const double share = std::clamp((wanted - cost_before) / seconds[range], 0.0, 1.0);
-      target[k] = cuts_[range] + share * (cuts_[range + 1] - cuts_[range]);
+      target_[k] = cuts_[range] + share * (cuts_[range + 1] - cuts_[range]);
     }
-    for (std::size_t k = 1; k < count; ++k) cuts_[k] += 0.5 * (target[k] - cuts_[k]);
+    for (std::size_t k = 1; k < count; ++k) cuts_[k] += 0.5 * (target_[k] - cuts_[k]);
     // Monotone by construction; kept so against rounding.
     for (std::size_t k = 1; k < count; ++k) cuts_[k] = std::clamp(cuts_[k], cuts_[k - 1], 1.0);
   }

@@ -227,6 +227,7 @@ class Simulation {
   [[nodiscard]] int range_of_pair(std::size_t index) const noexcept;
   [[nodiscard]] bool claim_block(std::size_t range, bool from_front, std::size_t& block) noexcept;
   [[nodiscard]] std::size_t steal_point(int range) const noexcept;
+  [[nodiscard]] std::size_t first_pair_not_added(std::size_t first, std::size_t last) const noexcept;
   static constexpr std::size_t kStealBlock = 64;  // pairs
   static constexpr std::size_t kClaimStride = 8;  // one claim per 64-byte cache line
   [[nodiscard]] bool pair_failed(std::size_t index) const noexcept {

@@ -110,8 +110,8 @@ std::size_t Simulation::compute_forces_threaded(SecondKick kick) {
   int team_size = threads_;
 #pragma omp parallel num_threads(threads_) reduction(+ : failures, taken) reduction(min : first_bad)
   {
-    // A team smaller than asked for would leave ranges without an owner. It does not happen
-    // without nesting, but if it did, every pair is evaluated after the region.
+    // A team smaller than asked for (a nested region, OMP_DYNAMIC) would leave ranges without an
+    // owner: then every pair is evaluated after the region (tested).
     const bool team_complete = omp_get_num_threads() == threads_;
     if (omp_get_thread_num() == 0) team_size = omp_get_num_threads();
     if (!team_complete) {
@@ -157,24 +157,20 @@ std::size_t Simulation::compute_forces_threaded(SecondKick kick) {
       for (std::size_t chunk = 0; chunk < chunk_sums_.size(); ++chunk) {
         const std::size_t first = chunk * kPairChunk;
         const std::size_t last = std::min(pair_count, first + kPairChunk) - 1;
-        const int range = range_of_pair(first);
-        if (range != range_of_pair(last) || last >= steal_point(range)) chunk_sums_[chunk] = sum_pair_chunk(chunk);
+        if (first_pair_not_added(first, last) <= last) chunk_sums_[chunk] = sum_pair_chunk(chunk);
       }
 #pragma omp for schedule(static) nowait
       for (std::size_t slot = 0; slot < count; ++slot) {
         const PairSpan span = pair_span_[slot];
         if (span.first <= span.last) {
-          const int range = range_of_pair(span.first);
-          if (range != range_of_pair(span.last))
-            gather_pair_forces(slot, 0);
-          else if (span.last >= steal_point(range))
-            gather_pair_forces(slot, steal_point(range));
+          const std::size_t from = first_pair_not_added(span.first, span.last);
+          if (from <= span.last) gather_pair_forces(slot, from);
         }
         if (kick.apply && kick_and_check_particle(slot, kick.half_dt) && slot < first_bad) first_bad = slot;
       }
     }
   }
-  if (team_size != threads_) {  // the one-thread loop's pairs and kicks (not seen in practice)
+  if (team_size != threads_) {  // the one-thread loop's pairs and kicks
     chunk_sums_.assign(pair_chunk_count(), ChunkSums{});
     accumulate(evaluate_pairs_in_order());
     return kick.apply ? kick_and_check(kick.half_dt) : count;
@@ -214,6 +210,15 @@ bool Simulation::claim_block(std::size_t range, bool from_front, std::size_t& bl
       return true;
     }
   }
+}
+
+// After the threaded pair loop, for the pairs first … last of a particle or a tally chunk (in list
+// order): the first whose result the loop did not add in list order. That is `first` when they
+// straddle a cut (no one thread added them all), else the steal point of their range; past
+// `last` when the range's owner evaluated them all.
+std::size_t Simulation::first_pair_not_added(std::size_t first, std::size_t last) const noexcept {
+  const int range = range_of_pair(first);
+  return range != range_of_pair(last) ? first : std::max(first, steal_point(range));
 }
 
 // After the threaded pair loop: the first pair of range `range` its owner did not evaluate.
