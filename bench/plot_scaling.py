@@ -39,17 +39,18 @@ def main():
             scale_ax.plot(common, [two[n] / one[n] for n in common], "o-", label=label)
     rate_ax.set(xscale="log", yscale="log", xlabel="particles N", ylabel="particle-steps / s",
                 title="bench_dem throughput")
-    rate_ax.legend(fontsize=7)
     cpu_ax.set(xscale="log", xlabel="particles N", ylabel="CPU ns per particle-step", title="cost per particle-step")
     cpu_ax.set_ylim(bottom=0)
-    cpu_ax.legend(fontsize=7)
     if scale_ax is not None:
         scale_ax.axhline(1.0, color="grey", lw=0.8)
         scale_ax.set(xscale="log", xlabel="particles N", ylabel="2 threads / 1 thread", title="thread scaling")
         scale_ax.legend(fontsize=7)
     if title:
         fig.suptitle(title, fontsize=9)
-    fig.tight_layout()
+    # One legend for the first two panels, below them: inside either it covered a curve.
+    handles, labels_of = rate_ax.get_legend_handles_labels()
+    fig.legend(handles, labels_of, loc="lower center", ncol=4, fontsize=8, frameon=False)
+    fig.tight_layout(rect=(0.0, 0.07, 1.0, 1.0))
     fig.savefig(sys.argv[2], dpi=110)
 
 
