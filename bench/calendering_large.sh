@@ -40,7 +40,7 @@ steps=$(sed -n 's/^steps = //p' "$out/summary.txt")
 import json, sys, datetime
 out, count, threads, speed, wall, user, sys_, rss_kib, steps, load0, load1, commit = sys.argv[1:]
 count, steps, wall = int(count), int(steps), float(wall)
-summary = dict(line.split(" = ", 1) for line in open(f"{out}/summary.txt") if " = " in line and not line.startswith("#"))
+summary = dict(line.rstrip("\n").split(" = ", 1) for line in open(f"{out}/summary.txt") if " = " in line and not line.startswith("#"))
 result = {
     "date": datetime.datetime.now(datetime.timezone.utc).isoformat(timespec="minutes"), "commit": commit,
     "particles": count, "threads": int(threads), "speed_um_per_us": float(speed), "steps": steps,
