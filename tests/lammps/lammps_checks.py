@@ -29,8 +29,17 @@ def mpi_launcher(args, np):
     return [args.mpirun, *[flag for flag in args.mpirun_flag if flag], "-np", str(np)]
 
 
+# Open MPI's runtime could not start its daemon: the process stopped inside MPI_Init, before any of
+# our code ran. Seen once (2026-12-04) with ctest -j2 beside a two-thread DEM run on the 2-core
+# machine; the same test passed when run again.
+MPI_STARTUP_FAILURE = ("orte_init failed", "Unable to start a daemon on the local node")
+
+
 def run(command, cwd):
     result = subprocess.run(command, cwd=cwd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
+    if result.returncode != 0 and any(sign in result.stdout for sign in MPI_STARTUP_FAILURE):
+        print(f"MPI did not start (retrying once): {' '.join(command)}", file=sys.stderr)
+        result = subprocess.run(command, cwd=cwd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
     if result.returncode != 0:
         sys.exit(f"command failed ({result.returncode}): {' '.join(command)}\n{result.stdout[-4000:]}")
     return result.stdout
