@@ -2,7 +2,9 @@
 """Figures of docs/lammps.md from runs of lmp_ellc and ellc.
 
   plot_figures.py two-particle --ellc BUILD/apps/ellc --lmp BUILD/integrations/lammps/lmp_ellc -o out.png
-  plot_figures.py calendering CSV -o out.png      (CSV written by examples/lammps/in.calendering)
+  plot_figures.py calendering LAMMPS_CSV [--engine ENGINE_CSV] -o out.png
+      LAMMPS_CSV: timeseries.csv of examples/lammps/in.calendering; ENGINE_CSV: that of
+      `ellc dem examples/calendering.toml` (the same packing, model, walls and protocol)
 """
 import argparse
 import csv
@@ -20,9 +22,17 @@ ROOT = os.path.dirname(os.path.dirname(HERE))
 
 
 def read(path):
+    """Columns of a CSV: numbers as floats, text columns (regime, phase) as strings."""
     with open(path) as handle:
         rows = list(csv.DictReader(handle))
-    return {key: [float(row[key]) if key != "regime" else row[key] for row in rows] for key in rows[0]}
+
+    def column(key):
+        try:
+            return [float(row[key]) for row in rows]
+        except ValueError:
+            return [row[key] for row in rows]
+
+    return {key: column(key) for key in rows[0]}
 
 
 def two_particle(args):
@@ -55,20 +65,40 @@ def two_particle(args):
 
 
 def calendering(args):
-    data = read(args.csv)
-    fig, (left, right) = plt.subplots(1, 2, figsize=(9.6, 3.8))
-    left.plot(data["time"], data["plate_stress_mpa"], label="top plate")
-    left.plot(data["time"], data["bottom_stress_mpa"], label="bottom wall")
-    left.set_xlabel("time [µs]")
-    left.set_ylabel("stress [MPa]")
-    left.legend(frameon=False)
-    start = data["plate_z"][0]
-    right.plot([start - z for z in data["plate_z"]], data["plate_stress_mpa"], color="tab:blue")
-    right.set_xlabel("plate travel [µm]")
-    right.set_ylabel("plate stress [MPa]")
+    """Plate pressure against time and against the layer's thickness, and the coordination number,
+    of the LAMMPS run and (with --engine) of the built-in engine on the same scenario: both write
+    the engine's column names."""
+    runs = [("LAMMPS (lmp_ellc)", read(args.csv), "tab:blue")]
+    if args.engine:
+        runs.append(("built-in engine (ellc dem)", read(args.engine), "tab:orange"))
+    fig, (by_time, by_thickness, coordination) = plt.subplots(1, 3, figsize=(13.5, 3.8))
+    pressing_starts = None  # the first time the plate pressure reaches 1 MPa, in either run
+    pressing_thickness = None  # the layer's thickness then
+    for label, data, colour in runs:
+        style = {"color": colour, "lw": 1.0, "label": label}
+        by_time.plot(data["time"], data["plate_pressure"], **style)
+        loading = [k for k, phase in enumerate(data["phase"]) if phase in ("load", "hold") and data["plate_pressure"][k] > 0]
+        by_thickness.plot([data["thickness"][k] for k in loading], [data["plate_pressure"][k] for k in loading],
+                          **style)
+        coordination.plot(data["time"], data["coordination_number"], **style)
+        first = next((k for k, p in enumerate(data["plate_pressure"]) if p >= 1.0), None)
+        if first is not None:
+            pressing_starts = min(data["time"][first], pressing_starts or data["time"][first])
+            pressing_thickness = max(data["thickness"][first], pressing_thickness or 0.0)
+    if pressing_starts is not None:  # the pressing and what follows; before it the pressure is ~0
+        by_time.set_xlim(left=pressing_starts - 0.3 * (by_time.get_xlim()[1] - pressing_starts))
+    by_time.set(xlabel="time [µs]", ylabel="plate pressure [MPa]", title="pressing, hold, release")
+    by_thickness.set(xlabel="layer thickness [µm]", ylabel="plate pressure [MPa]", title="pressing and hold")
+    if pressing_thickness is not None:
+        thinnest = min(min(data["thickness"]) for _, data, _ in runs)
+        by_thickness.set_xlim(pressing_thickness + 0.3 * (pressing_thickness - thinnest), thinnest - 0.5)
+    else:
+        by_thickness.invert_xaxis()
+    coordination.set(xlabel="time [µs]", ylabel="coordination number")
+    coordination.legend(frameon=False, loc="upper left")
     fig.suptitle(args.title)
     fig.tight_layout()
-    fig.savefig(args.output, dpi=130)
+    fig.savefig(args.output, dpi=110)
 
 
 def main():
@@ -80,7 +110,9 @@ def main():
     two.add_argument("-o", "--output", required=True)
     cal = sub.add_parser("calendering")
     cal.add_argument("csv")
-    cal.add_argument("--title", default="Calendering in LAMMPS (examples/lammps/in.calendering)")
+    cal.add_argument("--engine", help="the built-in engine's timeseries.csv of the same scenario")
+    cal.add_argument("--title", default="examples/calendering.toml in LAMMPS (examples/lammps/in.calendering) "
+                                        "and in the built-in engine")
     cal.add_argument("-o", "--output", required=True)
     args = parser.parse_args()
     {"two-particle": two_particle, "calendering": calendering}[args.figure](args)
