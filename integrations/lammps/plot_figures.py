@@ -83,8 +83,9 @@ def calendering(args):
         coordination.plot(data["time"], data["coordination_number"], **style)
         first = next((k for k, p in enumerate(data["plate_pressure"]) if p >= 1.0), None)
         if first is not None:
-            pressing_starts = min(data["time"][first], pressing_starts or data["time"][first])
-            pressing_thickness = max(data["thickness"][first], pressing_thickness or 0.0)
+            time, thickness = data["time"][first], data["thickness"][first]
+            pressing_starts = time if pressing_starts is None else min(pressing_starts, time)
+            pressing_thickness = thickness if pressing_thickness is None else max(pressing_thickness, thickness)
     if pressing_starts is not None:  # the pressing and what follows; before it the pressure is ~0
         by_time.set_xlim(left=pressing_starts - 0.3 * (by_time.get_xlim()[1] - pressing_starts))
     by_time.set(xlabel="time [µs]", ylabel="plate pressure [MPa]", title="pressing, hold, release")
