@@ -179,9 +179,9 @@ inline void apply_law(PairSolution& solution, const ContactConstants& constants,
                                      motion_j.velocity + motion_j.angular_velocity.cross(lever_j) - motion_i.velocity -
                                          motion_i.angular_velocity.cross(lever_i),
                                      motion_i.mass * motion_j.mass / (motion_i.mass + motion_j.mass)};
-  PairForces forces;
-  forces.contact =
-      contact_force(context, *solution.constants, solution.law.force, solution.branch, kinematics, dt, history);
+  // The contact force built in place (assigned to a default PairForces, it was built, then copied).
+  PairForces forces{
+      contact_force(context, *solution.constants, solution.law.force, solution.branch, kinematics, dt, history)};
   forces.torque_on_i = -lever_i.cross(forces.contact.on_j);
   forces.torque_on_j = lever_j.cross(forces.contact.on_j);
   return forces;
@@ -196,9 +196,8 @@ inline void apply_law(PairSolution& solution, const ContactConstants& constants,
   const ContactKinematics kinematics{
       solution.normal,
       Eigen::Vector3d(0.0, 0.0, wall_velocity) - motion.velocity - motion.angular_velocity.cross(lever), motion.mass};
-  WallForces forces;
-  forces.contact =
-      contact_force(context, *solution.constants, solution.law.force, solution.branch, kinematics, dt, history);
+  WallForces forces{
+      contact_force(context, *solution.constants, solution.law.force, solution.branch, kinematics, dt, history)};
   forces.lever_cross_force = lever.cross(forces.contact.on_j);
   return forces;
 }

@@ -245,12 +245,12 @@ void Simulation::evaluate_walls_and_reset(std::size_t slot) {
     WallResult& result = wall_results_[w][slot];
     result = WallResult{};
     reported = 1;  // cleared below if the result stays empty
-    PairSolution solution;
-    if (reach > 0.0) {
+    const PairSolution solution = [&] {
+      if (!(reach > 0.0)) return PairSolution{};
       const BodyRef body{p.semi_axes[slot], p.position[slot], p.orientation[slot], p.mean_radius[slot], shape};
-      solution = solve_wall(body, WallPlane{wall.position, wall.side}, is_sphere_[slot] != 0, history, cache,
-                            wall_context(slot));
-    }
+      return solve_wall(body, WallPlane{wall.position, wall.side}, is_sphere_[slot] != 0, history, cache,
+                        wall_context(slot));
+    }();
     if (solution.status == PairStatus::failed) {
       result.failed = true;
       continue;
@@ -293,19 +293,23 @@ void Simulation::evaluate_pair(std::size_t index, bool add_to_i, bool add_to_j) 
   ContactCache& cache = pair.cache;
   const Eigen::Vector3d centre_j = p.position[j] + pair.shift;
   const double reach = p.bounding_radius[i] + p.bounding_radius[j];
-  PairSolution solution;
   const double distance_sq = (centre_j - p.position[i]).squaredNorm();
-  if (distance_sq < reach * reach) {
+  // Built in place by the path that applies: a default solution overwritten by the solver's was
+  // built and then copied, ~150 bytes a pair (the sphere slab's step 5 % faster without).
+  const PairSolution solution = [&] {
+    if (!(distance_sq < reach * reach)) {
+      PairSolution apart;
+      apart.clearance = std::sqrt(distance_sq) - reach;  // bounding spheres apart
+      return apart;
+    }
     // shapes_ holds posed ellipsoids for non-spheres only (a sphere meeting an ellipsoid is
     // posed on demand by the adapter, and never takes the separating-axis shortcut).
     const BodyRef body_i{p.semi_axes[i], p.position[i], p.orientation[i], p.mean_radius[i],
                          is_sphere_[i] == 0 ? &shapes_[i] : nullptr};
     const BodyRef body_j{p.semi_axes[j], centre_j, p.orientation[j], p.mean_radius[j],
                          is_sphere_[j] == 0 ? &shapes_[j] : nullptr};
-    solution = solve_pair(body_i, body_j, is_sphere_[i] != 0 && is_sphere_[j] != 0, history, cache, pair_context(i, j));
-  } else {
-    solution.clearance = std::sqrt(distance_sq) - reach;  // bounding spheres apart
-  }
+    return solve_pair(body_i, body_j, is_sphere_[i] != 0 && is_sphere_[j] != 0, history, cache, pair_context(i, j));
+  }();
   PairResult& result = pair_results_[index];
   if (solution.status == PairStatus::failed) {
     result = PairResult{};
@@ -327,28 +331,31 @@ void Simulation::evaluate_pair(std::size_t index, bool add_to_i, bool add_to_j) 
     if (settings_.skip_proven_separated && usable > 0.0) clearance_budget_[index] = travel + usable;
     return;
   }
-  result = PairResult{};
-  pair_reported_[index] = 1;
-  result.contact = true;
-  result.regime = solution.law.regime;
+  // Filled in a local and stored once: stores into `result` before the call to the contact
+  // model could not be dropped, since the model might read that memory.
+  PairResult touching;
+  touching.contact = true;
+  touching.regime = solution.law.regime;
   if (solution.law.regime != Regime::separated) {  // else overlapping below δ_p: no force
     const PairForces forces =
         pair_forces(solution, p.position[i], BodyMotion{p.velocity[i], omega_world_[i], p.mass[i]}, centre_j,
                     BodyMotion{p.velocity[j], omega_world_[j], p.mass[j]}, pair_context(i, j), settings_.dt, history);
-    result.force_on_j = forces.contact.on_j;
-    result.torque_i = forces.torque_on_i;
-    result.torque_j = forces.torque_on_j;
-    result.damping_dissipation = forces.contact.damping_dissipation;
-    result.friction_dissipation = forces.contact.friction_dissipation;
+    touching.force_on_j = forces.contact.on_j;
+    touching.torque_i = forces.torque_on_i;
+    touching.torque_j = forces.torque_on_j;
+    touching.damping_dissipation = forces.contact.damping_dissipation;
+    touching.friction_dissipation = forces.contact.friction_dissipation;
   }
+  result = touching;
+  pair_reported_[index] = 1;
   // The operations of gather_pair_forces(), zeros included (they can turn -0 into +0).
   if (add_to_i) {
-    p.force[i] -= result.force_on_j;
-    p.torque[i] += result.torque_i;
+    p.force[i] -= touching.force_on_j;
+    p.torque[i] += touching.torque_i;
   }
   if (add_to_j) {
-    p.force[j] += result.force_on_j;
-    p.torque[j] += result.torque_j;
+    p.force[j] += touching.force_on_j;
+    p.torque[j] += touching.torque_j;
   }
 }
 
