@@ -377,13 +377,14 @@ void FixWallEllipsoidBK::wall_contacts(bool during_setup) {
       ellc::ContactHistory record = ellc::ContactHistory::read_from(stored);
       const double reach = bounding - kSide[w] * (motion.position.z() - p.position);
       if (reach <= 0.0 && !record.active()) continue;  // far from this plane, no contact to end
-      ellc::PairSolution solution;
       ellc::ContactCache cache;  // constants rebuilt every step, as in the pair style; solution points into it
-      if (reach > 0.0) {
+      // Built by the path that applies, as the engine's walls are (no default solution overwritten).
+      const ellc::PairSolution solution = [&] {
+        if (!(reach > 0.0)) return ellc::PairSolution{};
         const ellc::BodyRef body{semi_axes, motion.position, motion.orientation, pair_->mean_radius(i),
                                  &pair_->posed_body(i)};
-        solution = ellc::solve_wall(body, ellc::WallPlane{p.position, kSide[w]}, sphere, record, cache, context);
-      }
+        return ellc::solve_wall(body, ellc::WallPlane{p.position, kSide[w]}, sphere, record, cache, context);
+      }();
       if (solution.status == ellc::PairStatus::failed) {
         if (failures_++ == 0)
           error->warning(FLERR, prefix() + "the wall contact of atom " + std::to_string(atom->tag[i]) +
