@@ -196,6 +196,30 @@ TEST(TangentialSpring, ClosedStickCycleReturnsTheSpringToZero) {
   EXPECT_LT(slip_work, -10.0 * 0.2);  // dissipates at least μ F_n over half of the 0.4 travelled
 }
 
+// The contact model carries ξ once (contact_force.hpp: carry, then the rescale for a changed k_t)
+// and hands the carried spring to tangential_response_on_plane: steps 2–4 of the same step.
+TEST(TangentialSpring, TheResponseOnThePlaneIsTheStepAfterTheCarry) {
+  std::mt19937_64 rng(5);
+  for (int k = 0; k < 500; ++k) {
+    const State s = random_state(rng);
+    const TangentialResponse full = respond(s);
+    const TangentialResponse on_plane = tangential_response_on_plane(
+        carry_to_tangent_plane(s.spring, s.normal), s.normal, s.velocity, kDt, s.normal_force, s.coefficients);
+    EXPECT_EQ(full.force, on_plane.force);
+    EXPECT_EQ(full.spring, on_plane.spring);
+    EXPECT_EQ(full.sliding, on_plane.sliding);
+  }
+  // A spring off the plane is taken as it is: the caller carries it, so a stuck contact at rest
+  // under a turned normal keeps the spring's full force only through the carry.
+  const TangentialCoefficients c{1e3, 0.0, 1.0};
+  const Vector3d turned_normal(0.0, std::sin(0.5), std::cos(0.5));
+  const Vector3d spring(0.0, 1e-3, 0.0);
+  const TangentialResponse carried = tangential_response_on_plane(carry_to_tangent_plane(spring, turned_normal),
+                                                                  turned_normal, Vector3d::Zero(), kDt, 10.0, c);
+  EXPECT_NEAR(carried.force.norm(), 1e3 * 1e-3, 1e-15);
+  EXPECT_NEAR(carried.force.dot(turned_normal), 0.0, 1e-15);
+}
+
 TEST(TangentialSpring, InvariantUnderARotationOfTheFrame) {
   std::mt19937_64 rng(3);
   std::uniform_real_distribution<double> uniform(-1.0, 1.0);

@@ -85,7 +85,7 @@ inline double tangential_stiffness(const InteractionContext& context, const Bran
   if (k_old > 0.0 && k_t > k_old) spring *= k_old / k_t;
   const double released = energy_before - 0.5 * k_t * spring.squaredNorm();
   const TangentialResponse friction =
-      tangential_response(spring, n, kinematics.relative_velocity, dt, normal_force, tangential);
+      tangential_response_on_plane(spring, n, kinematics.relative_velocity, dt, normal_force, tangential);
   history.spring() = friction.spring;
   history.spring_stiffness = k_t;
   result.on_j = normal_force * n + friction.force;

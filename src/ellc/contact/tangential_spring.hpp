@@ -16,6 +16,8 @@
 
 #include <Eigen/Core>
 
+#include <cmath>
+
 namespace ellc {
 
 struct TangentialCoefficients {
@@ -31,27 +33,30 @@ struct TangentialResponse {
 };
 
 // ξ without its component along the unit normal n, scaled back to its length. A spring exactly
-// along n has no tangential direction left and becomes zero.
+// along n has no tangential direction left and becomes zero. One square root: the scale is
+// sqrt(|ξ|²/|ξ_t|²), not |ξ|/|ξ_t| from two norms.
 [[nodiscard]] inline Eigen::Vector3d carry_to_tangent_plane(const Eigen::Vector3d& spring,
                                                             const Eigen::Vector3d& normal) noexcept {
-  const double length = spring.norm();
-  if (!(length > 0.0)) return spring;  // nothing to turn (a non-finite ξ stays visible, not zeroed)
+  const double length_sq = spring.squaredNorm();
+  if (!(length_sq > 0.0)) return spring;  // nothing to turn (a non-finite ξ stays visible, not zeroed)
   const Eigen::Vector3d projected = spring - spring.dot(normal) * normal;
-  const double projected_length = projected.norm();
-  return projected_length > 0.0 ? Eigen::Vector3d(projected * (length / projected_length)) : Eigen::Vector3d::Zero();
+  const double projected_length_sq = projected.squaredNorm();
+  return projected_length_sq > 0.0 ? Eigen::Vector3d(projected * std::sqrt(length_sq / projected_length_sq))
+                                   : Eigen::Vector3d::Zero();
 }
 
-// One step of the spring ξ (`spring`, as stored after the previous step) under the normal force
-// F_n ≥ 0 of this step. Pure: the caller stores the returned spring.
-[[nodiscard]] inline TangentialResponse tangential_response(const Eigen::Vector3d& spring,
-                                                            const Eigen::Vector3d& normal,
-                                                            const Eigen::Vector3d& relative_velocity, double dt,
-                                                            double normal_force,
-                                                            const TangentialCoefficients& coefficients) noexcept {
+// One step of a spring ξ that already lies in the tangent plane of n (carry_to_tangent_plane; the
+// contact model carries it once, before it rescales it for a changed k_t) under the normal force
+// F_n ≥ 0 of this step: steps 2–4 above. Pure: the caller stores the returned spring.
+[[nodiscard]] inline TangentialResponse tangential_response_on_plane(const Eigen::Vector3d& carried_spring,
+                                                                     const Eigen::Vector3d& normal,
+                                                                     const Eigen::Vector3d& relative_velocity,
+                                                                     double dt, double normal_force,
+                                                                     const TangentialCoefficients& coefficients) noexcept {
   TangentialResponse response;
   if (!(coefficients.friction > 0.0) || !(coefficients.stiffness > 0.0)) return response;
   const Eigen::Vector3d tangential_velocity = relative_velocity - relative_velocity.dot(normal) * normal;
-  response.spring = carry_to_tangent_plane(spring, normal) + tangential_velocity * dt;
+  response.spring = carried_spring + tangential_velocity * dt;
   response.force = -coefficients.stiffness * response.spring - coefficients.damping * tangential_velocity;
   const double limit = coefficients.friction * normal_force;
   const double magnitude = response.force.norm();
@@ -61,6 +66,16 @@ struct TangentialResponse {
     response.sliding = true;
   }
   return response;
+}
+
+// One step of the spring ξ (`spring`, as stored after the previous step): steps 1–4 above.
+[[nodiscard]] inline TangentialResponse tangential_response(const Eigen::Vector3d& spring,
+                                                            const Eigen::Vector3d& normal,
+                                                            const Eigen::Vector3d& relative_velocity, double dt,
+                                                            double normal_force,
+                                                            const TangentialCoefficients& coefficients) noexcept {
+  return tangential_response_on_plane(carry_to_tangent_plane(spring, normal), normal, relative_velocity, dt,
+                                      normal_force, coefficients);
 }
 
 }  // namespace ellc
