@@ -48,11 +48,9 @@ struct TangentialResponse {
 // One step of a spring ξ that already lies in the tangent plane of n (carry_to_tangent_plane; the
 // contact model carries it once, before it rescales it for a changed k_t) under the normal force
 // F_n ≥ 0 of this step: steps 2–4 above. Pure: the caller stores the returned spring.
-[[nodiscard]] inline TangentialResponse tangential_response_on_plane(const Eigen::Vector3d& carried_spring,
-                                                                     const Eigen::Vector3d& normal,
-                                                                     const Eigen::Vector3d& relative_velocity,
-                                                                     double dt, double normal_force,
-                                                                     const TangentialCoefficients& coefficients) noexcept {
+[[nodiscard]] inline TangentialResponse tangential_response_on_plane(
+    const Eigen::Vector3d& carried_spring, const Eigen::Vector3d& normal, const Eigen::Vector3d& relative_velocity,
+    double dt, double normal_force, const TangentialCoefficients& coefficients) noexcept {
   TangentialResponse response;
   if (!(coefficients.friction > 0.0) || !(coefficients.stiffness > 0.0)) return response;
   const Eigen::Vector3d tangential_velocity = relative_velocity - relative_velocity.dot(normal) * normal;
