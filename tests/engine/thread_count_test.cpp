@@ -82,6 +82,46 @@ TEST(EngineThreadCount, FollowsTheLoadBothWays) {
   EXPECT_EQ(choice.current(), 2);
 }
 
+// Told that other processes leave no room (engine/cpu_load.hpp), it leaves all threads at once and
+// never tries them, even where the step times alone would (here all threads look faster).
+TEST(EngineThreadCount, WithoutRoomNeverRunsAllThreads) {
+  AdaptiveThreadCount choice(2);
+  EXPECT_EQ(choice.current(), 2);
+  choice.set_room_for_all(false);
+  EXPECT_EQ(choice.current(), 1);
+  const auto [on_one, on_two] = run(choice, 5000, [](int threads) { return threads == 2 ? 1.0 : 1.8; });
+  EXPECT_EQ(on_two, 0);
+  EXPECT_EQ(on_one, 5000);
+}
+
+// Room returns: all threads are probed as soon as one thread's first window is measured, and kept.
+TEST(EngineThreadCount, WhenRoomReturnsAllThreadsAreTriedAtOnce) {
+  AdaptiveThreadCount choice(2);
+  const auto quiet = [](int threads) { return threads == 2 ? 1.0 : 1.8; };
+  choice.set_room_for_all(false);
+  run(choice, 3000, quiet);  // long enough for the probe interval to have grown, had it probed
+  choice.set_room_for_all(true);
+  const auto [on_one, on_two] = run(choice, AdaptiveThreadCount::kWindow + AdaptiveThreadCount::kProbeSteps, quiet);
+  EXPECT_EQ(choice.current(), 2);
+  EXPECT_LE(on_one, AdaptiveThreadCount::kWindow);
+  EXPECT_GT(on_two, 0);
+}
+
+// Room gone in the middle of a probe of one thread against all: it settles on one thread.
+TEST(EngineThreadCount, RoomGoneDuringAProbeSettlesOnOneThread) {
+  AdaptiveThreadCount choice(2);
+  const auto quiet = [](int threads) { return threads == 2 ? 1.0 : 1.8; };
+  int step = 0;
+  while (choice.current() == 2 && step < 1000) {  // up to the first probe of one thread
+    choice.record(quiet(choice.current()));
+    ++step;
+  }
+  ASSERT_EQ(choice.current(), 1) << "no probe of one thread within 1000 steps";
+  choice.set_room_for_all(false);
+  const auto [on_one, on_two] = run(choice, 2000, quiet);
+  EXPECT_EQ(on_two, 0);
+}
+
 TEST(EngineThreadCount, OneThreadAvailableNeverProbes) {
   AdaptiveThreadCount choice(1);
   const auto [on_one, on_most] = run(choice, 1000, [](int) { return 1.0; });

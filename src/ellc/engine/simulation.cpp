@@ -10,6 +10,7 @@
 #include "ellc/contact/contact_energy.hpp"
 #include "ellc/contact/proven_apart.hpp"
 #include "ellc/engine/broad_phase.hpp"
+#include "ellc/engine/cpu_load.hpp"
 #include "ellc/engine/equilibrium.hpp"
 #include "ellc/engine/invariants.hpp"
 #include "ellc/engine/rigid_body.hpp"
@@ -188,7 +189,10 @@ void Simulation::refresh_body_frame(std::size_t slot) noexcept {
 }
 
 // The threads of the next step: all of omp_get_max_threads(), or the adaptive choice between one
-// and all (thread_count.hpp) fed with the previous step's wall time.
+// and all (thread_count.hpp) fed with the previous step's wall time and with whether other
+// processes leave a core for each thread (cpu_load.hpp: the process's reading, renewed every
+// 50 ms; the first simulation of a process starts it in its constructor, and one built later
+// has it before its first step).
 void Simulation::choose_threads() noexcept {
   const int most = omp_get_max_threads();
   if (!settings_.adaptive_threads) {
@@ -196,6 +200,10 @@ void Simulation::choose_threads() noexcept {
     return;
   }
   if (most != thread_choice_.most()) thread_choice_.reset(most);
+  if (most > 1) {
+    if (const auto reading = process_other_load(0.05))
+      thread_choice_.set_room_for_all(room_for_threads(reading->others_busy, reading->cores, most));
+  }
   threads_ = thread_choice_.current();
 }
 

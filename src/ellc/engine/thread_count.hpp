@@ -13,6 +13,12 @@
 // probe, so the next probe comes 800 steps later. A probe that wins, or a chosen count that slows
 // down by half, starts a new round at the short interval.
 //
+// The caller may also say whether other processes leave a core for every thread
+// (set_room_for_all, from engine/cpu_load.hpp). Without room, all threads are not run: a count of
+// all falls back to one at once, and probes of all wait; when room returns, one comes at once.
+// Timing alone finds a busy core too, but only by running slow steps on it: the first window of
+// all threads and every probe (issue 16's benchmark lost 4–7 % of a 300-step run to them).
+//
 // Pure bookkeeping of times, no clock and no OpenMP: the caller measures and asks.
 
 #include <algorithm>
@@ -41,7 +47,29 @@ class AdaptiveThreadCount {
     settled_mean_ = std::numeric_limits<double>::infinity();
     interval_ = kShortestInterval;
     steps_to_probe_ = kWindow;  // the first probe right after the first full window
+    room_ = true;
   }
+
+  // Whether other processes leave a core for each of most() threads (true until told otherwise).
+  void set_room_for_all(bool room) noexcept {
+    if (most_ == 1 || room == room_) return;
+    room_ = room;
+    if (!room) {
+      if (current_ == 1 && !probing_) return;  // on one thread already: its probes wait (record)
+      // All threads are running, or one thread is being probed against them: settle on one,
+      // with its time still to be measured.
+      current_ = 1;
+      probing_ = false;
+      settled_mean_ = std::numeric_limits<double>::infinity();
+      start_window(interval_);
+      return;
+    }
+    if (current_ == 1 && !probing_) {  // look again as soon as one thread's window is measured
+      interval_ = kShortestInterval;
+      steps_to_probe_ = 0;
+    }
+  }
+  [[nodiscard]] bool room_for_all() const noexcept { return room_; }
 
   [[nodiscard]] int most() const noexcept { return most_; }
   // The thread count for the next step.
@@ -85,6 +113,10 @@ class AdaptiveThreadCount {
       steps_ = 0;
     }
     if (--steps_to_probe_ <= 0 && settled_mean_ < std::numeric_limits<double>::infinity()) {
+      if (current_ == 1 && !room_) {  // all threads would share a core: not now
+        steps_to_probe_ = interval_;
+        return;
+      }
       probing_ = true;
       current_ = other();
       sum_ = 0.0;
@@ -108,6 +140,7 @@ class AdaptiveThreadCount {
   double settled_mean_ = 0.0;  // mean step time of current() over its last full window
   int interval_ = kShortestInterval;
   int steps_to_probe_ = kWindow;
+  bool room_ = true;  // other processes leave a core for every thread (set_room_for_all)
 };
 
 }  // namespace ellc::engine

@@ -1,0 +1,70 @@
+#pragma once
+// How much of the cores this process may run on other processes keep busy: what the adaptive
+// thread count (thread_count.hpp) needs to know before it tries all threads. Two threads whose
+// cores are shared with a busy process wait at every barrier for the one that is descheduled
+// (issue 16); timing them to find out costs steps, reading the kernel's counters costs nothing.
+//
+// Linux: the per-core lines of /proc/stat for the cores in this process's affinity mask (not the
+// whole machine's line: in a container that line counts cores we cannot run on), less this
+// process's own CPU time. Elsewhere, or when /proc/stat cannot be read: unknown (std::nullopt),
+// and the thread count goes by step times alone, as before.
+
+#include <optional>
+#include <string_view>
+
+namespace ellc::engine {
+
+// Cumulative CPU seconds at one moment.
+struct CpuTimes {
+  double busy = 0.0;  // user + nice + system + irq + softirq of the cores we may run on
+  double own = 0.0;   // this process, all threads (CLOCK_PROCESS_CPUTIME_ID)
+  double wall = 0.0;  // steady clock
+  int cores = 0;      // how many cores `busy` covers
+};
+
+// Busy ticks of one line of /proc/stat, "cpuN user nice system idle iowait irq softirq steal ...":
+// user + nice + system + irq + softirq (idle, iowait and steal are not another process of ours to
+// share a core with; guest time is inside user). nullopt when the line is not such a line.
+[[nodiscard]] std::optional<double> busy_ticks(std::string_view proc_stat_line) noexcept;
+
+// The core number N of a line "cpuN ..." (nullopt for the summary line "cpu " and other lines).
+[[nodiscard]] std::optional<int> core_of(std::string_view proc_stat_line) noexcept;
+
+// Now's counters; nullopt off Linux or when /proc/stat or the affinity mask cannot be read.
+[[nodiscard]] std::optional<CpuTimes> read_cpu_times() noexcept;
+
+// Cores kept busy by other processes between two readings, (Δbusy − Δown)/Δwall, clamped to
+// [0, cores]; 0 when no wall time passed.
+[[nodiscard]] double other_busy_cores(const CpuTimes& before, const CpuTimes& after) noexcept;
+
+// Whether `threads` threads find a core each: at most half a core's worth of the `cores` is kept
+// busy by others beyond what leaves `threads` free.
+[[nodiscard]] constexpr bool room_for_threads(double others_busy, int cores, int threads) noexcept {
+  return static_cast<double>(cores) - others_busy >= static_cast<double>(threads) - 0.5;
+}
+
+// Successive readings; sample() answers for the time since the last answer.
+class OtherProcessesLoad {
+ public:
+  // The cores other processes kept busy since the last answer, and how many cores were watched,
+  // once `min_interval` seconds have passed since it (the kernel's counters tick at 100 Hz, so a
+  // shorter window would be mostly rounding); nullopt before that, or when unknown.
+  struct Reading {
+    double others_busy = 0.0;
+    int cores = 0;
+  };
+  [[nodiscard]] std::optional<Reading> sample(double min_interval = 0.1) noexcept;
+
+ private:
+  std::optional<CpuTimes> last_;
+  bool readable_ = true;  // false after a failed read: not tried again
+};
+
+// One reading for the whole process (the load is the machine's, not a simulation's): the latest
+// answer of a process-wide OtherProcessesLoad, refreshed when `min_interval` has passed since it;
+// the first call starts it and answers nullopt. So a simulation built late in a process (a
+// benchmark's timed one, an ensemble's next member) knows the load before its first step.
+// Thread-safe.
+[[nodiscard]] std::optional<OtherProcessesLoad::Reading> process_other_load(double min_interval = 0.05) noexcept;
+
+}  // namespace ellc::engine

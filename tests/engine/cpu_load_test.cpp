@@ -1,0 +1,103 @@
+// What other processes keep busy of our cores (engine/cpu_load.hpp): the parsing of /proc/stat,
+// the arithmetic, the room rule, and on Linux a live reading while a child process spins.
+
+#include <gtest/gtest.h>
+
+#include <chrono>
+
+#include "ellc/engine/cpu_load.hpp"
+
+#if defined(__linux__)
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+#endif
+
+namespace ellc::engine {
+namespace {
+
+TEST(CpuLoad, BusyTicksAreUserNiceSystemIrqSoftirq) {
+  // user nice system idle iowait irq softirq steal guest guest_nice
+  const auto ticks = busy_ticks("cpu1 2191078 215958 156119 1003140 5631 7 1198 1780 0 0\n");
+  ASSERT_TRUE(ticks.has_value());
+  EXPECT_EQ(*ticks, 2191078.0 + 215958.0 + 156119.0 + 7.0 + 1198.0);
+  EXPECT_TRUE(busy_ticks("cpu  4104713 422302 291326 2313549 8023 0 1378 3567 0 0").has_value());
+  EXPECT_FALSE(busy_ticks("cpu0 1 2 3").has_value()) << "fewer than seven fields";
+  EXPECT_FALSE(busy_ticks("intr 21077201 0 0 0 0 0 0 0").has_value());
+  EXPECT_FALSE(busy_ticks("cpu0 1 2 x 4 5 6 7").has_value());
+}
+
+TEST(CpuLoad, CoreNumbersOfThePerCoreLinesOnly) {
+  EXPECT_EQ(core_of("cpu0 1 2 3 4 5 6 7"), 0);
+  EXPECT_EQ(core_of("cpu17 1 2 3 4 5 6 7"), 17);
+  EXPECT_FALSE(core_of("cpu  1 2 3 4 5 6 7").has_value()) << "the summary line";
+  EXPECT_FALSE(core_of("ctxt 12345").has_value());
+}
+
+TEST(CpuLoad, OthersAreTheBusyTimeLessOurOwnPerWallSecond) {
+  const CpuTimes before{10.0, 3.0, 100.0, 2};
+  EXPECT_DOUBLE_EQ(other_busy_cores(before, {11.5, 3.9, 101.0, 2}), 0.6);  // 1.5 busy, 0.9 ours
+  EXPECT_DOUBLE_EQ(other_busy_cores(before, {10.5, 3.9, 101.0, 2}), 0.0) << "clamped at 0 (tick rounding)";
+  EXPECT_DOUBLE_EQ(other_busy_cores(before, {19.0, 3.0, 101.0, 2}), 2.0) << "clamped at the cores watched";
+  EXPECT_DOUBLE_EQ(other_busy_cores(before, before), 0.0) << "no wall time";
+}
+
+TEST(CpuLoad, RoomForTwoThreadsOnTwoCoresNeedsAlmostAllOfBoth) {
+  EXPECT_TRUE(room_for_threads(0.0, 2, 2));
+  EXPECT_TRUE(room_for_threads(0.5, 2, 2));
+  EXPECT_FALSE(room_for_threads(0.6, 2, 2));
+  EXPECT_FALSE(room_for_threads(1.0, 2, 2)) << "one core kept busy: issue 16's case";
+  EXPECT_TRUE(room_for_threads(1.0, 4, 2));
+  EXPECT_FALSE(room_for_threads(0.0, 1, 2)) << "one core for two threads";
+}
+
+#if defined(__linux__)
+// A child process that spins for the reading's window shows up as at least half a core kept busy
+// by others (the child alone, whatever else the machine runs, counts for its whole share).
+TEST(CpuLoad, ASpinningChildIsSeenAsAnotherProcess) {
+  OtherProcessesLoad load;
+  ASSERT_FALSE(load.sample(0.0).has_value()) << "the first call only takes the first reading";
+  if (!read_cpu_times()) GTEST_SKIP() << "/proc/stat not readable here";
+  const pid_t child = fork();
+  ASSERT_GE(child, 0);
+  if (child == 0) {
+    const auto until = std::chrono::steady_clock::now() + std::chrono::seconds(5);
+    volatile unsigned long spin = 0;
+    while (std::chrono::steady_clock::now() < until) spin = spin + 1;
+    _exit(0);
+  }
+  const auto start = std::chrono::steady_clock::now();
+  while (std::chrono::steady_clock::now() - start < std::chrono::milliseconds(400)) {
+    // sleeps, so that this process's own time stays small beside the child's
+    timespec pause{0, 20'000'000};
+    nanosleep(&pause, nullptr);
+  }
+  const auto reading = load.sample(0.0);
+  kill(child, SIGKILL);
+  waitpid(child, nullptr, 0);
+  ASSERT_TRUE(reading.has_value());
+  EXPECT_GE(reading->cores, 1);
+  EXPECT_GE(reading->others_busy, 0.5);
+}
+
+// The process's reading: after its first call it answers, and keeps its latest answer between
+// renewals (a simulation built later in the process finds it at once).
+TEST(CpuLoad, TheProcessReadingAnswersAfterItsFirstCall) {
+  if (!read_cpu_times()) GTEST_SKIP() << "/proc/stat not readable here";
+  (void)process_other_load(0.0);
+  const auto first = process_other_load(0.0);
+  ASSERT_TRUE(first.has_value());
+  const auto kept = process_other_load(3600.0);  // not renewed: the latest answer
+  ASSERT_TRUE(kept.has_value());
+  EXPECT_EQ(kept->others_busy, first->others_busy);
+}
+
+TEST(CpuLoad, NoAnswerBeforeTheInterval) {
+  OtherProcessesLoad load;
+  (void)load.sample();
+  EXPECT_FALSE(load.sample(10.0).has_value());
+}
+#endif
+
+}  // namespace
+}  // namespace ellc::engine
