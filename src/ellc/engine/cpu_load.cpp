@@ -6,11 +6,11 @@
 #include <chrono>
 #include <cstdio>
 #include <cstring>
+#include <ctime>
 #include <mutex>
 
 #if defined(__linux__)
 #include <sched.h>
-#include <time.h>
 #include <unistd.h>
 #endif
 
