@@ -87,7 +87,7 @@ TEST(EngineThreadCount, FollowsTheLoadBothWays) {
 TEST(EngineThreadCount, WithoutRoomNeverRunsAllThreads) {
   AdaptiveThreadCount choice(2);
   EXPECT_EQ(choice.current(), 2);
-  choice.set_room_for_all(false);
+  choice.set_room_for_more(false);
   EXPECT_EQ(choice.current(), 1);
   const auto [on_one, on_two] = run(choice, 5000, [](int threads) { return threads == 2 ? 1.0 : 1.8; });
   EXPECT_EQ(on_two, 0);
@@ -98,9 +98,9 @@ TEST(EngineThreadCount, WithoutRoomNeverRunsAllThreads) {
 TEST(EngineThreadCount, WhenRoomReturnsAllThreadsAreTriedAtOnce) {
   AdaptiveThreadCount choice(2);
   const auto quiet = [](int threads) { return threads == 2 ? 1.0 : 1.8; };
-  choice.set_room_for_all(false);
+  choice.set_room_for_more(false);
   run(choice, 3000, quiet);  // long enough for the probe interval to have grown, had it probed
-  choice.set_room_for_all(true);
+  choice.set_room_for_more(true);
   const auto [on_one, on_two] = run(choice, AdaptiveThreadCount::kWindow + AdaptiveThreadCount::kProbeSteps, quiet);
   EXPECT_EQ(choice.current(), 2);
   EXPECT_LE(on_one, AdaptiveThreadCount::kWindow);
@@ -117,7 +117,7 @@ TEST(EngineThreadCount, RoomGoneDuringAProbeSettlesOnOneThread) {
     ++step;
   }
   ASSERT_EQ(choice.current(), 1) << "no probe of one thread within 1000 steps";
-  choice.set_room_for_all(false);
+  choice.set_room_for_more(false);
   const auto [on_one, on_two] = run(choice, 2000, quiet);
   EXPECT_EQ(on_two, 0);
 }

@@ -1,6 +1,6 @@
 #pragma once
 // How much of the cores this process may run on other processes keep busy: what the adaptive
-// thread count (thread_count.hpp) needs to know before it tries all threads. Two threads whose
+// thread count (thread_count.hpp) needs to know before it tries more than one thread. Two threads whose
 // cores are shared with a busy process wait at every barrier for the one that is descheduled
 // (issue 16); timing them to find out costs steps, reading the kernel's counters costs nothing.
 //
@@ -37,10 +37,13 @@ struct CpuTimes {
 // [0, cores]; 0 when no wall time passed.
 [[nodiscard]] double other_busy_cores(const CpuTimes& before, const CpuTimes& after) noexcept;
 
-// Whether `threads` threads find a core each: at most half a core's worth of the `cores` is kept
-// busy by others beyond what leaves `threads` free.
-[[nodiscard]] constexpr bool room_for_threads(double others_busy, int cores, int threads) noexcept {
-  return static_cast<double>(cores) - others_busy >= static_cast<double>(threads) - 0.5;
+// Whether more than one thread can help: others leave at least one and a half of the `cores`
+// free. Below that, every thread beyond the first shares the one free core (or less) and waits
+// at each barrier for its turn (issue 16: two threads 5× slower than one with one core of two
+// busy). Above it the step times decide: 64 threads with 2 of 64 cores busy still beat one
+// thread by far, and only a measurement tells how far.
+[[nodiscard]] constexpr bool room_for_more_than_one(double others_busy, int cores) noexcept {
+  return static_cast<double>(cores) - others_busy >= 1.5;
 }
 
 // Successive readings; sample() answers for the time since the last answer.

@@ -190,7 +190,7 @@ void Simulation::refresh_body_frame(std::size_t slot) noexcept {
 
 // The threads of the next step: all of omp_get_max_threads(), or the adaptive choice between one
 // and all (thread_count.hpp) fed with the previous step's wall time and with whether other
-// processes leave a core for each thread (cpu_load.hpp: the process's reading, renewed every
+// processes leave room for more than one thread (cpu_load.hpp: the process's reading, renewed every
 // 50 ms; the first simulation of a process starts it in its constructor, and one built later
 // has it before its first step).
 void Simulation::choose_threads() noexcept {
@@ -202,7 +202,7 @@ void Simulation::choose_threads() noexcept {
   if (most != thread_choice_.most()) thread_choice_.reset(most);
   if (most > 1) {
     if (const auto reading = process_other_load(0.05))
-      thread_choice_.set_room_for_all(room_for_threads(reading->others_busy, reading->cores, most));
+      thread_choice_.set_room_for_more(room_for_more_than_one(reading->others_busy, reading->cores));
   }
   threads_ = thread_choice_.current();
 }

@@ -13,9 +13,10 @@
 // probe, so the next probe comes 800 steps later. A probe that wins, or a chosen count that slows
 // down by half, starts a new round at the short interval.
 //
-// The caller may also say whether other processes leave a core for every thread
-// (set_room_for_all, from engine/cpu_load.hpp). Without room, all threads are not run: a count of
-// all falls back to one at once, and probes of all wait; when room returns, one comes at once.
+// The caller may also say whether other processes leave room for more than one thread
+// (set_room_for_more, from engine/cpu_load.hpp: at least 1.5 cores free). Without room, all
+// threads are not run: a count of all falls back to one at once, and probes of all wait; when
+// room returns, one comes at once. With room, the step times decide as above.
 // Timing alone finds a busy core too, but only by running slow steps on it: the first window of
 // all threads and every probe (issue 16's benchmark lost 4–7 % of a 300-step run to them).
 //
@@ -50,8 +51,8 @@ class AdaptiveThreadCount {
     room_ = true;
   }
 
-  // Whether other processes leave a core for each of most() threads (true until told otherwise).
-  void set_room_for_all(bool room) noexcept {
+  // Whether other processes leave room for more than one thread (true until told otherwise).
+  void set_room_for_more(bool room) noexcept {
     if (most_ == 1 || room == room_) return;
     room_ = room;
     if (!room) {
@@ -69,7 +70,7 @@ class AdaptiveThreadCount {
       steps_to_probe_ = 0;
     }
   }
-  [[nodiscard]] bool room_for_all() const noexcept { return room_; }
+  [[nodiscard]] bool room_for_more() const noexcept { return room_; }
 
   [[nodiscard]] int most() const noexcept { return most_; }
   // The thread count for the next step.
@@ -140,7 +141,7 @@ class AdaptiveThreadCount {
   double settled_mean_ = 0.0;  // mean step time of current() over its last full window
   int interval_ = kShortestInterval;
   int steps_to_probe_ = kWindow;
-  bool room_ = true;  // other processes leave a core for every thread (set_room_for_all)
+  bool room_ = true;  // other processes leave room for more than one thread (set_room_for_more)
 };
 
 }  // namespace ellc::engine
