@@ -29,6 +29,11 @@ std::optional<unsigned long long> next_number(std::string_view text, std::size_t
   return value;
 }
 
+// Seconds on the steady clock: the wall time of a reading, and the clock sample() checks first.
+double steady_seconds() noexcept {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
+}
+
 }  // namespace
 
 std::optional<int> core_of(std::string_view line) noexcept {
@@ -86,7 +91,7 @@ std::optional<CpuTimes> read_cpu_times() noexcept {
   std::fclose(file);
   if (times.cores == 0) return std::nullopt;
   times.own = static_cast<double>(own.tv_sec) + 1e-9 * static_cast<double>(own.tv_nsec);
-  times.wall = std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
+  times.wall = steady_seconds();
   return times;
 #else
   return std::nullopt;
@@ -96,8 +101,7 @@ std::optional<CpuTimes> read_cpu_times() noexcept {
 std::optional<OtherProcessesLoad::Reading> OtherProcessesLoad::sample(double min_interval) noexcept {
   if (!readable_) return std::nullopt;
   if (last_) {  // the clock first: /proc/stat is read only when an answer is due
-    const double now = std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
-    if (now - last_->wall < min_interval) return std::nullopt;
+    if (steady_seconds() - last_->wall < min_interval) return std::nullopt;
   }
   const std::optional<CpuTimes> now = read_cpu_times();
   if (!now) {

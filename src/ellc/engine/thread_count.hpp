@@ -70,7 +70,6 @@ class AdaptiveThreadCount {
       steps_to_probe_ = 0;
     }
   }
-  [[nodiscard]] bool room_for_more() const noexcept { return room_; }
 
   [[nodiscard]] int most() const noexcept { return most_; }
   // The thread count for the next step.
