@@ -1,9 +1,13 @@
 // What other processes keep busy of our cores (engine/cpu_load.hpp): the parsing of /proc/stat,
-// the arithmetic, the room rule, and on Linux a live reading while a child process spins.
+// the arithmetic, the room rule, and on Linux a live reading while a child process spins; and the
+// CPU quota: cgroup v1 and v2 files, the walk up a fake cgroup tree, the thread cap.
 
 #include <gtest/gtest.h>
 
 #include <chrono>
+#include <filesystem>
+#include <fstream>
+#include <string>
 
 #include "ellc/engine/cpu_load.hpp"
 
@@ -52,6 +56,84 @@ TEST(CpuLoad, RoomForMoreThanOneThreadNeedsOneAndAHalfFreeCores) {
   EXPECT_TRUE(room_for_more_than_one(2.0, 64)) << "64 cores, 2 busy: 62 threads still run unshared";
   EXPECT_FALSE(room_for_more_than_one(3.0, 4)) << "one free core of four";
   EXPECT_FALSE(room_for_more_than_one(0.0, 1)) << "a process allowed one core";
+}
+
+TEST(CpuLoad, QuotaInCoresFromCgroupFiles) {
+  EXPECT_EQ(quota_cores_v2("150000 100000\n"), 1.5);
+  EXPECT_EQ(quota_cores_v2("200000 100000"), 2.0);
+  EXPECT_FALSE(quota_cores_v2("max 100000\n").has_value()) << "no limit";
+  EXPECT_FALSE(quota_cores_v2("").has_value());
+  EXPECT_FALSE(quota_cores_v2("150000").has_value()) << "no period";
+  EXPECT_FALSE(quota_cores_v2("150000 0").has_value());
+  EXPECT_FALSE(quota_cores_v2("15x000 100000").has_value());
+  EXPECT_EQ(quota_cores_v1("50000\n", "100000\n"), 0.5);
+  EXPECT_FALSE(quota_cores_v1("-1\n", "100000\n").has_value()) << "cgroup v1's no limit";
+  EXPECT_FALSE(quota_cores_v1("", "100000").has_value());
+}
+
+TEST(CpuLoad, ThreadsAreCappedAtTheQuotaRoundedUp) {
+  EXPECT_EQ(threads_within_quota(64, 2.0), 2) << "a 2-core limit on a 64-core node";
+  EXPECT_EQ(threads_within_quota(64, 1.5), 2);
+  EXPECT_EQ(threads_within_quota(64, 0.25), 1);
+  EXPECT_EQ(threads_within_quota(2, 8.0), 2) << "a quota above the cores changes nothing";
+  EXPECT_EQ(threads_within_quota(4, std::nullopt), 4);
+  EXPECT_EQ(threads_within_quota(0, std::nullopt), 1);
+  EXPECT_EQ(threads_within_quota(8, 1e300), 8);
+}
+
+// A cgroup tree in a temporary directory: the tightest limit on the path up to the mount binds.
+class CpuQuotaTree : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    root_ = std::filesystem::temp_directory_path() /
+            ("ellc_cpu_quota_" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()) + "_" +
+             ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    std::filesystem::remove_all(root_);
+  }
+  void TearDown() override { std::filesystem::remove_all(root_); }
+  void write(const std::string& relative, const std::string& text) const {
+    const auto path = root_ / relative;
+    std::filesystem::create_directories(path.parent_path());
+    std::ofstream(path) << text;
+  }
+  [[nodiscard]] std::string mount() const { return root_.string(); }
+
+  std::filesystem::path root_;
+};
+
+TEST_F(CpuQuotaTree, CgroupV2TakesTheTightestLimitUpTheTree) {
+  write("kubepods/pod1/cpu.max", "300000 100000\n");
+  write("kubepods/pod1/app/cpu.max", "max 100000\n");
+  write("kubepods/cpu.max", "max 100000\n");
+  EXPECT_EQ(cpu_quota_cores("0::/kubepods/pod1/app\n", mount()), 3.0) << "the pod's limit binds the app";
+  write("kubepods/pod1/app/cpu.max", "120000 100000\n");
+  EXPECT_EQ(cpu_quota_cores("0::/kubepods/pod1/app\n", mount()), 1.2);
+  EXPECT_FALSE(cpu_quota_cores("0::/kubepods\n", mount()).has_value());
+}
+
+TEST_F(CpuQuotaTree, AContainerSeeingItsOwnCgroupAsTheRoot) {
+  write("cpu.max", "100000 100000\n");  // the namespaced root holds the container's limit
+  EXPECT_EQ(cpu_quota_cores("0::/\n", mount()), 1.0);
+  EXPECT_EQ(cpu_quota_cores("0::/docker/abc\n", mount()), 1.0) << "a host path not under the mount";
+}
+
+TEST_F(CpuQuotaTree, CgroupV1CpuControllerUnderEitherMountName) {
+  write("cpu,cpuacct/batch/cpu.cfs_quota_us", "150000\n");
+  write("cpu,cpuacct/batch/cpu.cfs_period_us", "100000\n");
+  const std::string membership = "12:memory:/batch\n4:cpu,cpuacct:/batch/job\n1:name=systemd:/batch\n";
+  EXPECT_EQ(cpu_quota_cores(membership, mount()), 1.5);
+  write("cpu/batch/job/cpu.cfs_quota_us", "-1\n");
+  write("cpu/batch/job/cpu.cfs_period_us", "100000\n");
+  write("cpu/batch/cpu.cfs_quota_us", "50000\n");
+  write("cpu/batch/cpu.cfs_period_us", "100000\n");
+  EXPECT_EQ(cpu_quota_cores(membership, mount()), 0.5);
+  EXPECT_FALSE(cpu_quota_cores("4:cpuacct:/batch\n", mount()).has_value()) << "not the cpu controller";
+}
+
+TEST_F(CpuQuotaTree, NoFilesOrNoMembershipMeanNoQuota) {
+  EXPECT_FALSE(cpu_quota_cores("0::/a/b\n", mount()).has_value());
+  EXPECT_FALSE(cpu_quota_cores("", mount()).has_value());
+  EXPECT_FALSE(cpu_quota_cores("garbage without colons\n0:x\n", mount()).has_value());
 }
 
 #if defined(__linux__)

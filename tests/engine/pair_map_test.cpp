@@ -97,9 +97,9 @@ TEST(EnginePairMap, ThreadedHistoryMergeEqualsOneMerge) {
   }
   std::sort(after.begin(), after.end(), [](const PairSlot& a, const PairSlot& b) { return a.key < b.key; });
   std::vector<PairSlot> one = after, threaded = after;
-  const double serial = carry_over_history(before, one, false);
+  const double serial = carry_over_history(before, one, 1);
   EXPECT_GT(serial, 0.0);
-  const double parallel = carry_over_history(before, threaded, true);
+  const double parallel = carry_over_history(before, threaded, 2);
   EXPECT_EQ(parallel, serial);
   ASSERT_EQ(one.size(), threaded.size());
   for (std::size_t k = 0; k < one.size(); ++k) {
@@ -110,8 +110,8 @@ TEST(EnginePairMap, ThreadedHistoryMergeEqualsOneMerge) {
 }
 
 // The cell list finds exactly the pairs a brute-force search over all pairs (minimum image in x
-// and y) finds, sorted by key as the history merge needs, and the same list with or without
-// threads. Ids are shuffled against the slots so that key order and slot order differ.
+// and y) finds, sorted by key as the history merge needs, and the same list for any thread count.
+// Ids are shuffled against the slots so that key order and slot order differ.
 TEST(EnginePairMap, CellListEqualsBruteForceSortedByKey) {
   const Box box{40.0, 30.0};
   Random random(21);
@@ -126,33 +126,36 @@ TEST(EnginePairMap, CellListEqualsBruteForceSortedByKey) {
     particles.add(id, axes, 1.0, centre, random.rotation());
   }
   const double skin = 0.3;
-  const auto serial = find_candidate_pairs(particles, box, skin, false);
-  const auto threaded = find_candidate_pairs(particles, box, skin, true);
-  std::vector<PairKey> expected;
-  const auto image = [](double d, double length) { return d - length * std::round(d / length); };
-  for (std::size_t a = 0; a < particles.size(); ++a)
-    for (std::size_t b = a + 1; b < particles.size(); ++b) {
-      const Eigen::Vector3d raw = particles.position[b] - particles.position[a];
-      const Eigen::Vector3d d(image(raw.x(), box.lx), image(raw.y(), box.ly), raw.z());
-      const double reach = particles.bounding_radius[a] + particles.bounding_radius[b] + skin;
-      if (d.squaredNorm() < reach * reach)
-        expected.push_back(
-            pair_key(std::min(particles.id[a], particles.id[b]), std::max(particles.id[a], particles.id[b])));
+  const auto serial = find_candidate_pairs(particles, box, skin, 1);
+  for (const int threads : {2, 3, 7}) {  // as many id ranges as threads, of uneven sizes for 3 and 7
+    SCOPED_TRACE(threads);
+    const auto threaded = find_candidate_pairs(particles, box, skin, threads);
+    std::vector<PairKey> expected;
+    const auto image = [](double d, double length) { return d - length * std::round(d / length); };
+    for (std::size_t a = 0; a < particles.size(); ++a)
+      for (std::size_t b = a + 1; b < particles.size(); ++b) {
+        const Eigen::Vector3d raw = particles.position[b] - particles.position[a];
+        const Eigen::Vector3d d(image(raw.x(), box.lx), image(raw.y(), box.ly), raw.z());
+        const double reach = particles.bounding_radius[a] + particles.bounding_radius[b] + skin;
+        if (d.squaredNorm() < reach * reach)
+          expected.push_back(
+              pair_key(std::min(particles.id[a], particles.id[b]), std::max(particles.id[a], particles.id[b])));
+      }
+    std::sort(expected.begin(), expected.end());
+    ASSERT_GT(expected.size(), 100U);
+    ASSERT_EQ(serial.size(), expected.size());
+    ASSERT_EQ(threaded.size(), expected.size());
+    for (std::size_t k = 0; k < expected.size(); ++k) {
+      EXPECT_EQ(serial[k].key, expected[k]);
+      EXPECT_EQ(threaded[k].key, expected[k]);
+      EXPECT_EQ(threaded[k].i, serial[k].i);
+      EXPECT_EQ(threaded[k].j, serial[k].j);
+      EXPECT_EQ(threaded[k].shift, serial[k].shift);
+      EXPECT_LT(particles.id[serial[k].i], particles.id[serial[k].j]);  // i is the smaller id
+      const Eigen::Vector3d seen = particles.position[serial[k].j] + serial[k].shift - particles.position[serial[k].i];
+      EXPECT_LE(std::abs(seen.x()), 0.5 * box.lx);  // the shift gives the nearest image
+      EXPECT_LE(std::abs(seen.y()), 0.5 * box.ly);
     }
-  std::sort(expected.begin(), expected.end());
-  ASSERT_GT(expected.size(), 100U);
-  ASSERT_EQ(serial.size(), expected.size());
-  ASSERT_EQ(threaded.size(), expected.size());
-  for (std::size_t k = 0; k < expected.size(); ++k) {
-    EXPECT_EQ(serial[k].key, expected[k]);
-    EXPECT_EQ(threaded[k].key, expected[k]);
-    EXPECT_EQ(threaded[k].i, serial[k].i);
-    EXPECT_EQ(threaded[k].j, serial[k].j);
-    EXPECT_EQ(threaded[k].shift, serial[k].shift);
-    EXPECT_LT(particles.id[serial[k].i], particles.id[serial[k].j]);  // i is the smaller id
-    const Eigen::Vector3d seen = particles.position[serial[k].j] + serial[k].shift - particles.position[serial[k].i];
-    EXPECT_LE(std::abs(seen.x()), 0.5 * box.lx);  // the shift gives the nearest image
-    EXPECT_LE(std::abs(seen.y()), 0.5 * box.ly);
   }
 }
 
@@ -179,7 +182,7 @@ TEST(EnginePairMap, TinyParticlesInAHugeBoxNeedMemoryForTheParticlesOnly) {
   add({20.0, box.ly - 0.5 * radius, 3.0});  // across y = 0
   add({20.0, 0.5 * radius, 3.0});
   const double skin = 0.1 * radius;
-  const auto pairs = find_candidate_pairs(particles, box, skin, true);
+  const auto pairs = find_candidate_pairs(particles, box, skin, 2);
   std::vector<PairKey> expected;
   const auto image = [](double d, double length) { return d - length * std::round(d / length); };
   for (std::size_t a = 0; a < particles.size(); ++a)

@@ -214,13 +214,13 @@ void wrap_positions(ParticleSet& particles, const Box& box) noexcept {
   ELLC_ASSERT(invariants::positions_in_box(particles, box), "wrap_positions left a particle outside [0, lx) x [0, ly)");
 }
 
-std::vector<PairSlot> find_candidate_pairs(const ParticleSet& particles, const Box& box, double skin, bool parallel) {
+std::vector<PairSlot> find_candidate_pairs(const ParticleSet& particles, const Box& box, double skin, int threads) {
   std::vector<PairSlot> pairs;
-  find_candidate_pairs(particles, box, skin, parallel, pairs);
+  find_candidate_pairs(particles, box, skin, threads, pairs);
   return pairs;
 }
 
-void find_candidate_pairs(const ParticleSet& particles, const Box& box, double skin, bool parallel,
+void find_candidate_pairs(const ParticleSet& particles, const Box& box, double skin, int threads,
                           std::vector<PairSlot>& pairs) {
   ELLC_ASSERT(invariants::positions_in_box(particles, box), "find_candidate_pairs needs x, y wrapped into the box");
   const std::size_t count = particles.size();
@@ -255,10 +255,8 @@ void find_candidate_pairs(const ParticleSet& particles, const Box& box, double s
     std::uint32_t i, j;
     Eigen::Vector3d shift;
   };
-  int blocks = 1;
-#ifdef _OPENMP
-  if (parallel) blocks = omp_get_max_threads();
-#endif
+  const bool parallel = threads > 1;
+  const int blocks = std::max(threads, 1);  // one id range per thread
   std::vector<std::vector<Candidate>> found(static_cast<std::size_t>(blocks));
   // What the distance test reads, copied in cell order: a neighbour cell is then one contiguous
   // run of memory instead of scattered reads through three arrays.
@@ -274,7 +272,7 @@ void find_candidate_pairs(const ParticleSet& particles, const Box& box, double s
     in_cell_order[k] = {particles.position[slot], particles.bounding_radius[slot], id[slot], slot};
   }
 
-#pragma omp parallel for schedule(static, 1) if (parallel)
+#pragma omp parallel for schedule(static, 1) num_threads(blocks) if (parallel)
   for (int block = 0; block < blocks; ++block) {
     auto& out = found[static_cast<std::size_t>(block)];
     std::vector<Candidate> scratch;  // one particle's tested pairs
@@ -317,7 +315,7 @@ void find_candidate_pairs(const ParticleSet& particles, const Box& box, double s
   // Resizing a list of about the same length constructs (and zero-fills) nothing serially; every
   // slot is overwritten below, in parallel.
   pairs.resize(offset.back());
-#pragma omp parallel for schedule(static, 1) if (parallel)
+#pragma omp parallel for schedule(static, 1) num_threads(blocks) if (parallel)
   for (int block = 0; block < blocks; ++block) {
     const auto& part = found[static_cast<std::size_t>(block)];
     for (std::size_t k = 0; k < part.size(); ++k) {
@@ -332,7 +330,7 @@ void find_candidate_pairs(const ParticleSet& particles, const Box& box, double s
   ELLC_ASSERT(invariants::valid_pair_list(pairs, particles), "pairs not sorted by key, or slots/ids inconsistent");
 }
 
-double carry_over_history(std::vector<PairSlot>& previous, std::vector<PairSlot>& next, bool parallel) {
+double carry_over_history(std::vector<PairSlot>& previous, std::vector<PairSlot>& next, int threads) {
   ELLC_ASSERT(invariants::keys_sorted(previous) && invariants::keys_sorted(next), "both lists must be sorted by key");
   // Fixed chunks of the old list, each merged from its first key's place in the new one: the
   // copies are disjoint (keys are unique), and the energy of contacts that left the list is summed
@@ -341,7 +339,7 @@ double carry_over_history(std::vector<PairSlot>& previous, std::vector<PairSlot>
   constexpr std::size_t kChunk = 4096;
   const std::size_t chunks = (previous.size() + kChunk - 1) / kChunk;
   std::vector<std::vector<double>> released(chunks);
-#pragma omp parallel for schedule(dynamic, 1) if (parallel)
+#pragma omp parallel for schedule(dynamic, 1) num_threads(std::max(threads, 1)) if (threads > 1)
   for (std::size_t chunk = 0; chunk < chunks; ++chunk) {
     const std::size_t begin = chunk * kChunk;
     const std::size_t end = std::min(previous.size(), begin + kChunk);

@@ -4,9 +4,12 @@
 #include <array>
 #include <charconv>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <ctime>
+#include <fstream>
+#include <iterator>
 #include <mutex>
 
 #if defined(__linux__)
@@ -34,7 +37,126 @@ double steady_seconds() noexcept {
   return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
 }
 
+// The first whitespace-separated token of `text`.
+std::string_view first_token(std::string_view text) noexcept {
+  const std::size_t begin = text.find_first_not_of(" \t\n");
+  if (begin == std::string_view::npos) return {};
+  const std::size_t end = text.find_first_of(" \t\n", begin);
+  return text.substr(begin, end == std::string_view::npos ? std::string_view::npos : end - begin);
+}
+
+std::optional<long long> whole_number(std::string_view token) noexcept {
+  long long value = 0;
+  const auto [end, error] = std::from_chars(token.data(), token.data() + token.size(), value);
+  if (error != std::errc{} || end != token.data() + token.size() || token.empty()) return std::nullopt;
+  return value;
+}
+
+// quota / period in cores; nullopt unless both are positive.
+std::optional<double> quota_over_period(std::optional<long long> quota, std::optional<long long> period) noexcept {
+  if (!quota || !period || *quota <= 0 || *period <= 0) return std::nullopt;
+  return static_cast<double>(*quota) / static_cast<double>(*period);
+}
+
+std::optional<std::string> file_text(const std::string& path) noexcept {
+  try {
+    std::ifstream in(path);
+    if (!in) return std::nullopt;
+    return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+  } catch (...) {  // noexcept API: an allocation failure reads as "no quota"
+    return std::nullopt;
+  }
+}
+
 }  // namespace
+
+std::optional<double> quota_cores_v2(std::string_view cpu_max) noexcept {
+  const std::string_view quota = first_token(cpu_max);
+  if (quota.empty() || quota == "max") return std::nullopt;
+  const std::string_view rest = cpu_max.substr(static_cast<std::size_t>(quota.data() + quota.size() - cpu_max.data()));
+  return quota_over_period(whole_number(quota), whole_number(first_token(rest)));
+}
+
+std::optional<double> quota_cores_v1(std::string_view quota_us, std::string_view period_us) noexcept {
+  return quota_over_period(whole_number(first_token(quota_us)), whole_number(first_token(period_us)));
+}
+
+std::optional<double> cpu_quota_cores(std::string_view membership, const std::string& mount) noexcept {
+  std::optional<double> tightest;
+  const auto take = [&tightest](std::optional<double> quota) {
+    if (quota && (!tightest || *quota < *tightest)) tightest = quota;
+  };
+  // From the cgroup's directory under `base` up to `base` itself.
+  const auto walk_up = [](const std::string& base, std::string_view path, const auto& read_at) {
+    std::string at(path);
+    while (true) {
+      read_at(at == "/" ? base : base + at);
+      if (at.empty() || at == "/") return;
+      const std::size_t slash = at.find_last_of('/');  // paths start with '/'
+      at.erase(slash == 0 ? 1 : slash);
+    }
+  };
+  try {
+    std::size_t line_begin = 0;
+    while (line_begin < membership.size()) {
+      std::size_t line_end = membership.find('\n', line_begin);
+      if (line_end == std::string_view::npos) line_end = membership.size();
+      const std::string_view line = membership.substr(line_begin, line_end - line_begin);
+      line_begin = line_end + 1;
+      // "HIERARCHY-ID:CONTROLLERS:PATH"; v2's line is "0::PATH".
+      const std::size_t first = line.find(':');
+      const std::size_t second = first == std::string_view::npos ? first : line.find(':', first + 1);
+      if (second == std::string_view::npos) continue;
+      const std::string_view controllers = line.substr(first + 1, second - first - 1);
+      const std::string_view path = line.substr(second + 1);
+      if (path.empty() || path.front() != '/') continue;
+      if (line.substr(0, first) == "0" && controllers.empty()) {
+        walk_up(mount, path, [&](const std::string& dir) {
+          if (const auto text = file_text(dir + "/cpu.max")) take(quota_cores_v2(*text));
+        });
+        continue;
+      }
+      bool has_cpu = false;  // "cpu" in the comma-separated list ("cpu,cpuacct" is mounted as such)
+      for (std::size_t at = 0; at <= controllers.size();) {
+        std::size_t comma = controllers.find(',', at);
+        if (comma == std::string_view::npos) comma = controllers.size();
+        has_cpu = has_cpu || controllers.substr(at, comma - at) == "cpu";
+        at = comma + 1;
+      }
+      if (!has_cpu) continue;
+      for (const std::string& base : {mount + "/" + std::string(controllers), mount + "/cpu"}) {
+        walk_up(base, path, [&](const std::string& dir) {
+          const auto quota = file_text(dir + "/cpu.cfs_quota_us");
+          const auto period = file_text(dir + "/cpu.cfs_period_us");
+          if (quota && period) take(quota_cores_v1(*quota, *period));
+        });
+      }
+    }
+  } catch (...) {  // string allocation: no quota known
+    return tightest;
+  }
+  return tightest;
+}
+
+std::optional<double> process_cpu_quota() noexcept {
+#if defined(__linux__)
+  static const std::optional<double> quota = []() -> std::optional<double> {
+    const auto membership = file_text("/proc/self/cgroup");
+    if (!membership) return std::nullopt;
+    return cpu_quota_cores(*membership, "/sys/fs/cgroup");
+  }();
+  return quota;
+#else
+  return std::nullopt;
+#endif
+}
+
+int threads_within_quota(int threads, std::optional<double> quota_cores) noexcept {
+  threads = std::max(threads, 1);
+  if (!quota_cores || !(*quota_cores > 0.0)) return threads;
+  const double cap = std::ceil(std::min(*quota_cores, 1e6));
+  return std::min(threads, std::max(1, static_cast<int>(cap)));
+}
 
 std::optional<int> core_of(std::string_view line) noexcept {
   if (line.size() < 4 || line.substr(0, 3) != "cpu") return std::nullopt;

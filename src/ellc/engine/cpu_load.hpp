@@ -10,6 +10,7 @@
 // and the thread count goes by step times alone, as before.
 
 #include <optional>
+#include <string>
 #include <string_view>
 
 namespace ellc::engine {
@@ -42,9 +43,37 @@ struct CpuTimes {
 // at each barrier for its turn (issue 16: two threads 5× slower than one with one core of two
 // busy). Above it the step times decide: 64 threads with 2 of 64 cores busy still beat one
 // thread by far, and only a measurement tells how far.
-[[nodiscard]] constexpr bool room_for_more_than_one(double others_busy, int cores) noexcept {
-  return static_cast<double>(cores) - others_busy >= 1.5;
+// `cores`: those of the affinity mask, or fewer under a CPU quota (cpu_quota_cores below).
+[[nodiscard]] constexpr bool room_for_more_than_one(double others_busy, double cores) noexcept {
+  return cores - others_busy >= 1.5;
 }
+
+// A CPU quota (a container's `--cpus`, a Kubernetes CPU limit, systemd's CPUQuota) caps the CPU
+// time a process may use per wall second, whatever its affinity mask: libgomp still starts a
+// thread per core of the mask, and threads beyond the quota use it up early in each period and
+// then all wait, throttled, for the next (a 2-core quota on a 64-core node: 64 threads run for
+// ~3 ms of every 100). The cores it may not use look idle in /proc/stat. So the thread count
+// reads the quota too.
+//
+// The quota in cores of a cgroup v2 `cpu.max` ("QUOTA PERIOD" in µs; "max PERIOD": none, nullopt).
+[[nodiscard]] std::optional<double> quota_cores_v2(std::string_view cpu_max) noexcept;
+// The same from cgroup v1's `cpu.cfs_quota_us` (−1: none) and `cpu.cfs_period_us`.
+[[nodiscard]] std::optional<double> quota_cores_v1(std::string_view quota_us, std::string_view period_us) noexcept;
+
+// The tightest quota over this process's cgroup and its ancestors (a limit on a parent binds its
+// children), v2 and v1 alike, from `membership` (the text of /proc/self/cgroup) and the cgroup
+// file system mounted at `mount`. Where the process's path is not found under the mount (a
+// container that sees its own cgroup as the root), the walk up still reaches the mount's own
+// files. nullopt when no quota is set or nothing can be read.
+[[nodiscard]] std::optional<double> cpu_quota_cores(std::string_view membership, const std::string& mount) noexcept;
+
+// The process's quota (/proc/self/cgroup, /sys/fs/cgroup), read once: quotas are set when a
+// container starts. nullopt off Linux.
+[[nodiscard]] std::optional<double> process_cpu_quota() noexcept;
+
+// At most as many threads as the quota has cores, rounded up (a 1.5-core quota still gains from
+// a second thread), and at least one; `threads` itself without a quota.
+[[nodiscard]] int threads_within_quota(int threads, std::optional<double> quota_cores) noexcept;
 
 // Successive readings; sample() answers for the time since the last answer.
 class OtherProcessesLoad {

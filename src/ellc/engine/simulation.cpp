@@ -5,6 +5,7 @@
 #include <chrono>
 #include <cmath>
 #include <limits>
+#include <optional>
 
 #include "ellc/assert.hpp"
 #include "ellc/contact/contact_energy.hpp"
@@ -154,8 +155,9 @@ void Simulation::set_wall_position(int wall, double position) { walls_[wall].pos
 
 void Simulation::rebuild_neighbours() {
   wrap_positions(particles_, settings_.box);
-  find_candidate_pairs(particles_, settings_.box, skin_, parallel(), spare_pairs_);
-  released_work_ += carry_over_history(pairs_, spare_pairs_, parallel());
+  const int threads = parallel() ? threads_ : 1;
+  find_candidate_pairs(particles_, settings_.box, skin_, threads, spare_pairs_);
+  released_work_ += carry_over_history(pairs_, spare_pairs_, threads);
   std::swap(pairs_, spare_pairs_);  // the old list's storage serves the next rebuild
   // Only the flags are cleared: every reader of a result checks its flag first, and every step
   // writes the results it flags (clearing 104 bytes a pair took 0.2 ms a rebuild, serially).
@@ -189,20 +191,23 @@ void Simulation::refresh_body_frame(std::size_t slot) noexcept {
 }
 
 // The threads of the next step: all of omp_get_max_threads(), or the adaptive choice between one
-// and all (thread_count.hpp) fed with the previous step's wall time and with whether other
-// processes leave room for more than one thread (cpu_load.hpp: the process's reading, renewed every
-// 50 ms; the first simulation of a process starts it in its constructor, and one built later
-// has it before its first step).
+// and all of them the CPU quota leaves worth running (thread_count.hpp) fed with the previous
+// step's wall time and with whether other processes and the quota leave room for more than one
+// thread (cpu_load.hpp: the process's reading, renewed every 50 ms; the first simulation of a
+// process starts it in its constructor, and one built later has it before its first step).
 void Simulation::choose_threads() noexcept {
-  const int most = omp_get_max_threads();
   if (!settings_.adaptive_threads) {
-    threads_ = most;
+    threads_ = omp_get_max_threads();
     return;
   }
+  const std::optional<double> quota = process_cpu_quota();
+  const int most = threads_within_quota(omp_get_max_threads(), quota);
   if (most != thread_choice_.most()) thread_choice_.reset(most);
   if (most > 1) {
-    if (const auto reading = process_other_load(0.05))
-      thread_choice_.set_room_for_more(room_for_more_than_one(reading->others_busy, reading->cores));
+    if (const auto reading = process_other_load(0.05)) {
+      const double cores = std::min(static_cast<double>(reading->cores), quota.value_or(reading->cores));
+      thread_choice_.set_room_for_more(room_for_more_than_one(reading->others_busy, cores));
+    }
   }
   threads_ = thread_choice_.current();
 }
