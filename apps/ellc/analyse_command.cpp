@@ -149,7 +149,8 @@ const RegisterCommand registration([](CLI::App& root) {
   command->add_option("--memory-limit-gib", options->memory_limit_gib,
                       "Refuse grids whose analysis needs more (default 4 GiB)");
   command->add_option("--coarse-factor", options->coarse_factor,
-                      "The resolution check: tortuosity again at this x the voxel size (default 2; 1: none)");
+                      "The resolution check: tortuosity and pore radii again at this x the voxel size, and tortuosity "
+                      "extrapolated to zero voxel size (default 2; 1: none)");
   command->add_option("--axes", options->axes, "Tortuosity directions, some of x, y, z (default xyz)");
   command->add_flag("--no-plot", options->no_plot, "Skip the PNGs (no Python needed)");
   command->callback([options, spacing] {

@@ -133,8 +133,9 @@ def tortuosity_porosity_figure(states, title=None, axes=None):
     """Through-plane tortuosity factor against porosity for analysed states, with Bruggeman's tau = eps^-0.5.
 
     ``states``: a list of ``(label, summary)`` where ``summary`` is :func:`read_summary` of an
-    analysis folder (porosity_voxels, tortuosity_z, tortuosity_z_coarse, voxel sizes). The value at
-    the coarser resolution is drawn hollow. Returns the Figure.
+    analysis folder (porosity_voxels, tortuosity_z, tortuosity_z_coarse, tortuosity_z_extrapolated,
+    voxel sizes). The value at the coarser resolution is drawn hollow, the extrapolation to zero
+    voxel size as a star. Returns the Figure.
     """
     import matplotlib.pyplot as plt
     import numpy as np
@@ -158,6 +159,10 @@ def tortuosity_porosity_figure(states, title=None, axes=None):
         if isinstance(coarse, float) and math.isfinite(coarse):
             axes.plot(summary["porosity_voxels"], coarse, "o", mfc="none", color=colours(index), ms=7,
                       label=f"{label}: {summary['coarse_voxel_size_um']:.3g} um voxels")
+        estimate = summary.get("tortuosity_z_extrapolated")
+        if isinstance(estimate, float) and math.isfinite(estimate):
+            axes.plot(summary["porosity_voxels"], estimate, "*", color=colours(index), ms=9,
+                      label=f"{label}: extrapolated to 0 um voxels")
     axes.set_xlabel("porosity eps")
     axes.set_ylabel("through-plane tortuosity factor tau_z")
     axes.grid(alpha=0.3)

@@ -78,6 +78,24 @@ TEST(AnalyseCli, WritesEveryFileOfAPacking) {
     ASSERT_TRUE(keys.contains(key)) << key;
     EXPECT_GT(std::stod(keys.at(key)), 1.0) << key;
   }
+  // The pore radii at both resolutions: each median below its largest, the coarse one a grid of
+  // twice the spacing's.
+  for (const char* suffix : {"", "_coarse"}) {
+    const std::string median = std::string("pore_radius_median_um") + suffix;
+    const std::string largest = std::string("pore_radius_largest_um") + suffix;
+    ASSERT_TRUE(keys.contains(median) && keys.contains(largest)) << suffix;
+    EXPECT_GT(std::stod(keys.at(median)), 0.0) << suffix;
+    EXPECT_LT(std::stod(keys.at(median)), std::stod(keys.at(largest))) << suffix;
+  }
+  EXPECT_NEAR(analysis["coarse_voxel_size_um"].value<double>().value_or(0.0), 0.7, 1e-9);
+  // τ extrapolated to zero voxel size: 2 τ(h) − τ(2h) for each axis.
+  for (const char* axis : {"x", "y", "z"}) {
+    const std::string base = std::string("tortuosity_") + axis;
+    ASSERT_TRUE(keys.contains(base + "_extrapolated")) << axis;
+    EXPECT_NEAR(std::stod(keys.at(base + "_extrapolated")),
+                2.0 * std::stod(keys.at(base)) - std::stod(keys.at(base + "_coarse")), 1e-12)
+        << axis;
+  }
 }
 
 TEST(AnalyseCli, BadInputIsRefusedByName) {
@@ -151,7 +169,9 @@ TEST(AnalyseCli, CalenderingRunAnalysesItsStatesAndTheCheckpointAgrees) {
   ASSERT_EQ(run.exit_code, 0) << run.output;
   const auto summary = read_keys(out / "summary.txt");
   for (const char* key : {"analysis_loaded_porosity", "analysis_released_porosity", "analysis_loaded_tortuosity_z",
-                          "analysis_released_tortuosity_z", "analysis_bruggeman_exponent"})
+                          "analysis_released_tortuosity_z", "analysis_bruggeman_exponent",
+                          "analysis_loaded_pore_radius_median_um", "analysis_loaded_pore_radius_median_um_coarse",
+                          "analysis_released_pore_radius_median_um", "analysis_loaded_tortuosity_z_extrapolated"})
     EXPECT_TRUE(summary.contains(key)) << key << "\n" << run.output;
   // Released: more porous than loaded, and the pore path longer when denser.
   EXPECT_GT(std::stod(summary.at("analysis_released_porosity")), std::stod(summary.at("analysis_loaded_porosity")));

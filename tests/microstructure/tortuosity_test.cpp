@@ -125,6 +125,39 @@ TEST(Tortuosity, SimpleCubicArrayOfSpheresMatchesRayleigh) {
   }
 }
 
+// The analysis reports τ at h and at 2h and their Richardson extrapolation to h → 0. On the
+// sphere array τ's exact value at the sphere's own fraction f is (1 − f)/σ_e(f) (Maxwell–Rayleigh,
+// above); the voxel values approach it at first order from their staircase, and the extrapolation
+// of each pair lands several times closer than the finer value of the pair. Measured (f = 0.2):
+// 24/12 voxels per cell 2.6 % → 0.2 %, 32/16 2.2 % → 0.1 %, 40/20 1.4 % → 0.02 %; at 16/8 (2.9
+// voxels per sphere radius on the coarse grid, outside the first-order range) 4.4 % → 4.0 %.
+TEST(Tortuosity, ExtrapolationToZeroVoxelSizeBeatsTheFinerGrid) {
+  EXPECT_EQ(extrapolated_tortuosity(1.8, 2.1, 2.0), 1.5);
+  EXPECT_EQ(extrapolated_tortuosity(1.8, 2.4, 3.0), 1.5);
+  EXPECT_FALSE(extrapolated_tortuosity(std::numeric_limits<double>::infinity(), 2.0, 2.0).has_value());
+  EXPECT_FALSE(extrapolated_tortuosity(1.8, 2.1, 1.0).has_value()) << "no coarser grid";
+  EXPECT_FALSE(extrapolated_tortuosity(1.8, std::nan(""), 2.0).has_value());
+  const double fraction = 0.2;
+  const double radius = std::cbrt(3.0 * fraction / (4.0 * std::numbers::pi));
+  const Packing packing = test::one_sphere(radius, {0.5, 0.5, 0.5}, 1.0);
+  const double exact = (1.0 - fraction) / maxwell_rayleigh_conductivity(fraction);
+  const auto tau_at = [&](int voxels) {
+    Resolution resolution;
+    resolution.spacing = 1.0 / voxels;
+    return tortuosity_factor(voxelise(packing, resolution), 0, tight()).tortuosity;
+  };
+  for (const int fine : {24, 32, 40}) {
+    const double tau_fine = tau_at(fine);
+    const double tau_coarse = tau_at(fine / 2);
+    const auto estimate = extrapolated_tortuosity(tau_fine, tau_coarse, 2.0);
+    ASSERT_TRUE(estimate.has_value());
+    std::printf("f = %.2f, %d/%d voxels per cell: tau %.5f and %.5f, extrapolated %.5f, exact %.5f\n", fraction, fine,
+                fine / 2, tau_fine, tau_coarse, *estimate, exact);
+    EXPECT_LT(std::abs(*estimate - exact), 0.25 * std::abs(tau_fine - exact)) << fine;
+    EXPECT_LT(std::abs(*estimate / exact - 1.0), 0.005) << fine;
+  }
+}
+
 TEST(Tortuosity, SameBitsOnOneThreadAsOnTwo) {
 #ifdef _OPENMP
   const Packing packing = test::random_ellipsoids(10, 12.0, 21);

@@ -70,9 +70,13 @@ AnalysisReport analyse(const Packing& packing, const AnalysisOptions& options, c
     const VoxelGrid coarse = voxelise_coarser(packing, report.spacing, options.coarse_factor);
     report.coarse_spacing = report.spacing * options.coarse_factor;
     report.coarse_shape = coarse.shape;
+    report.pore_sizes_coarse = continuous_pore_size_distribution(coarse, options.pore_size_radii);
     for (std::size_t axis = 0; axis < 3; ++axis)
-      if (options.tortuosity_axes[axis])
+      if (options.tortuosity_axes[axis]) {
         report.tortuosity_coarse[axis] = tortuosity_factor(coarse, static_cast<int>(axis), options.diffusion);
+        report.tortuosity_extrapolated[axis] = extrapolated_tortuosity(
+            report.tortuosity[axis]->tortuosity, report.tortuosity_coarse[axis]->tortuosity, options.coarse_factor);
+      }
   }
   return report;
 }
@@ -100,7 +104,13 @@ void write_analysis_summary(std::ostream& out, const AnalysisReport& report) {
   if (report.coarse_spacing > 0.0) {
     out << "coarse_voxel_size_um = " << toml_float(report.coarse_spacing)
         << "\ncoarse_grid = " << toml_array(report.coarse_shape) << '\n';
+    if (const auto& psd = report.pore_sizes_coarse)
+      out << "pore_radius_median_um_coarse = " << toml_float(psd->median_radius)
+          << "\npore_radius_largest_um_coarse = " << toml_float(psd->largest_radius) << '\n';
     for (const auto& result : report.tortuosity_coarse) write(result, "_coarse");
+    for (std::size_t axis = 0; axis < 3; ++axis)
+      if (const auto& estimate = report.tortuosity_extrapolated[axis])
+        out << "tortuosity_" << kAxes[axis] << "_extrapolated = " << toml_float(*estimate) << '\n';
   }
 }
 

@@ -1,7 +1,8 @@
 #pragma once
 // The whole microstructure analysis of one packing, as `ellc analyse` and `ellc dem`'s
 // [analysis] run it (docs/microstructure.md): voxelise, profiles, pore sizes, tortuosity along
-// x, y, z at the resolution and at a coarser one (the resolution check), force distribution.
+// x, y, z and pore sizes at the resolution and at a coarser one (the resolution check), force
+// distribution.
 
 #include <array>
 #include <iosfwd>
@@ -20,7 +21,7 @@ namespace ellc::microstructure {
 struct AnalysisOptions {
   Resolution resolution;
   std::array<bool, 3> tortuosity_axes{true, true, true};  // x, y, z
-  double coarse_factor = 2.0;   // the resolution check: τ again at this × the spacing (≤ 1: none)
+  double coarse_factor = 2.0;   // the resolution check: τ and r₅₀ again at this × the spacing (≤ 1: none)
   double slab_thickness = 0.0;  // µm; 0 → half the mean particle radius (abc)^(1/3)
   int pore_size_radii = 24;
   DiffusionOptions diffusion;
@@ -39,6 +40,8 @@ struct AnalysisReport {
   ForceDistribution forces;
   std::array<std::optional<DiffusionResult>, 3> tortuosity;         // at the spacing
   std::array<std::optional<DiffusionResult>, 3> tortuosity_coarse;  // at coarse_factor × the spacing
+  std::optional<PoreSizeDistribution> pore_sizes_coarse;            // at coarse_factor × the spacing
+  std::array<std::optional<double>, 3> tortuosity_extrapolated;     // to zero voxel size (Richardson)
   double coarse_spacing = 0.0;
   std::array<int, 3> coarse_shape{0, 0, 0};
 };
@@ -53,8 +56,8 @@ struct AnalysisReport {
 // and analysis.txt (write_analysis_summary). The PNGs are drawn from the CSVs by
 // `python3 -m ellc.plots analysis DIRECTORY`.
 void write_analysis(const std::string& directory, const Packing& packing, const AnalysisReport& report);
-// A TOML document, one key per line: grid, porosities, τ per axis at both resolutions (inf and
-// the reason when a direction does not percolate), pore sizes, forces.
+// A TOML document, one key per line: grid, porosities, τ per axis and the pore radii at both
+// resolutions (inf and the reason when a direction does not percolate), forces.
 void write_analysis_summary(std::ostream& out, const AnalysisReport& report);
 
 }  // namespace ellc::microstructure

@@ -263,6 +263,13 @@ DiffusionResult tortuosity_factor(const VoxelGrid& grid, int axis, const Diffusi
   return solve_diffusion(grid, diffusivity, axis, 1.0, options);
 }
 
+std::optional<double> extrapolated_tortuosity(double at_spacing, double at_coarse, double factor) noexcept {
+  if (!(std::isfinite(at_spacing) && std::isfinite(at_coarse) && at_spacing > 0.0 && at_coarse > 0.0 &&
+        std::isfinite(factor) && factor > 1.0))
+    return std::nullopt;
+  return at_spacing + (at_spacing - at_coarse) / (factor - 1.0);
+}
+
 double fit_bruggeman_exponent(const std::vector<double>& porosity, const std::vector<double>& tortuosity) {
   double sxy = 0.0;
   double sxx = 0.0;

@@ -15,6 +15,7 @@
 // conjugate gradients with a Jacobi preconditioner, starting from the linear profile. Sums are
 // taken over fixed blocks in a fixed order, so the result does not depend on the thread count.
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -48,6 +49,14 @@ struct DiffusionResult {
                                               double bulk = 1.0, const DiffusionOptions& options = {});
 // The pore phase of the grid (solid == 0) with D = 1.
 [[nodiscard]] DiffusionResult tortuosity_factor(const VoxelGrid& grid, int axis, const DiffusionOptions& options = {});
+
+// τ at zero voxel size from τ at the voxel size h and at factor × h, by Richardson's
+// extrapolation for first-order convergence (the voxel staircase's; docs/microstructure.md,
+// "Resolution"): τ(0) ≈ τ(h) + (τ(h) − τ(factor h)) / (factor − 1). nullopt unless both are
+// finite and positive and factor > 1. It is an estimate, worth as much as the first-order trend
+// holds at these sizes: the two values should differ by well under τ(h) − 1.
+[[nodiscard]] std::optional<double> extrapolated_tortuosity(double at_spacing, double at_coarse,
+                                                            double factor) noexcept;
 
 // The Bruggeman exponent α of D_eff/D_bulk = ε^α, i.e. τ = ε^(1 − α) (α = 1.5 is Bruggeman's
 // τ = ε^(−1/2)): the least-squares fit of ln τ = (1 − α) ln ε through the origin over the states

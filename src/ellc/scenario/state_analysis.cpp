@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <sstream>
+#include <string>
 
 #include "ellc/geometry/ellipsoid.hpp"
 #include "ellc/io/input_error.hpp"
@@ -84,9 +85,18 @@ std::string states_summary(const std::vector<StateAnalysis>& states) {
       porosity.push_back(report.porosity_voxels);
       tortuosity.push_back(tau->tortuosity);
     }
+    const std::string at_coarse =
+        "  # at " + format_number(report.coarse_spacing) + " um voxels (" + format_number(report.spacing) + " above)\n";
     if (const auto& coarse = report.tortuosity_coarse[2])
-      out << "analysis_" << state.state << "_tortuosity_z_coarse = " << toml_float(coarse->tortuosity) << "  # at "
-          << format_number(report.coarse_spacing) << " um voxels (" << format_number(report.spacing) << " above)\n";
+      out << "analysis_" << state.state << "_tortuosity_z_coarse = " << toml_float(coarse->tortuosity) << at_coarse;
+    if (const auto& estimate = report.tortuosity_extrapolated[2])
+      out << "analysis_" << state.state << "_tortuosity_z_extrapolated = " << toml_float(*estimate)
+          << "  # to zero voxel size from the two above (first order)\n";
+    out << "analysis_" << state.state << "_pore_radius_median_um = " << toml_float(report.pore_sizes.median_radius)
+        << '\n';
+    if (const auto& coarse = report.pore_sizes_coarse)
+      out << "analysis_" << state.state << "_pore_radius_median_um_coarse = " << toml_float(coarse->median_radius)
+          << at_coarse;
   }
   const double alpha = microstructure::fit_bruggeman_exponent(porosity, tortuosity);
   if (std::isfinite(alpha))
