@@ -72,10 +72,11 @@ AnalysisReport analyse(const Packing& packing, const AnalysisOptions& options, c
     report.coarse_shape = coarse.shape;
     report.pore_sizes_coarse = continuous_pore_size_distribution(coarse, options.pore_size_radii);
     for (std::size_t axis = 0; axis < 3; ++axis)
-      if (options.tortuosity_axes[axis]) {
-        report.tortuosity_coarse[axis] = tortuosity_factor(coarse, static_cast<int>(axis), options.diffusion);
-        report.tortuosity_extrapolated[axis] = extrapolated_tortuosity(
-            report.tortuosity[axis]->tortuosity, report.tortuosity_coarse[axis]->tortuosity, options.coarse_factor);
+      if (const auto& fine = report.tortuosity[axis]) {  // the axes asked for
+        const DiffusionResult at_coarse = tortuosity_factor(coarse, static_cast<int>(axis), options.diffusion);
+        report.tortuosity_extrapolated[axis] =
+            extrapolated_tortuosity(fine->tortuosity, at_coarse.tortuosity, options.coarse_factor);
+        report.tortuosity_coarse[axis] = at_coarse;
       }
   }
   return report;
