@@ -99,6 +99,7 @@ std::string scenario_beside(const std::string& checkpoint) {
 
 void run_analyse(const AnalyseOptions& options) {
   prefer_short_spinning();
+  cap_threads_at_cpu_quota();
   const std::filesystem::path input(options.input);
   microstructure::Packing packing;
   if (input.extension() == ".csv") {

@@ -446,6 +446,7 @@ void run_dem(const DemOptions& options) {
 #ifdef _OPENMP
   if (options.threads > 0) omp_set_num_threads(options.threads);
 #endif
+  if (options.threads <= 0) cap_threads_at_cpu_quota();
   scenario::Scenario loaded = scenario::read_scenario(options.scenario_path, options.overrides);
   const std::vector<const ComparedLaw*> laws = compared_laws(options);
   const scenario::RunPlan plan = check_plan(options, loaded);

@@ -10,6 +10,12 @@
 #include <string>
 #include <vector>
 
+#include "ellc/engine/cpu_load.hpp"
+
+#ifdef _OPENMP
+#include <omp.h>
+#endif
+
 namespace ellc::cli {
 
 void prefer_short_spinning() {
@@ -34,6 +40,15 @@ void prefer_short_spinning() {
   setenv("GOMP_SPINCOUNT", "1000", 1);
   std::fflush(nullptr);
   execv("/proc/self/exe", arguments.data());  // returns only on failure: then run as we are
+#endif
+}
+
+void cap_threads_at_cpu_quota() {
+#ifdef _OPENMP
+  if (std::getenv("OMP_NUM_THREADS") != nullptr) return;  // the user's count
+  const int most = omp_get_max_threads();
+  const int within = engine::threads_within_quota(most, engine::process_cpu_quota());
+  if (within < most) omp_set_num_threads(within);
 #endif
 }
 
