@@ -6,6 +6,7 @@
 #include <pybind11/numpy.h>
 #include <pybind11/stl.h>
 
+#include <limits>
 #include <sstream>
 #include <string>
 
@@ -171,6 +172,15 @@ void bind_microstructure(py::module_& parent) {
       py::arg("memory_limit_gib") = 4.0, py::arg("coarse_factor") = 2.0,
       "The analysis of `ellc analyse`; writes its files into `directory` unless empty; returns analysis.txt's TOML "
       "text.");
+  module.def(
+      "extrapolated_tortuosity",
+      [](double at_spacing, double at_coarse, double factor) {
+        const auto estimate = microstructure::extrapolated_tortuosity(at_spacing, at_coarse, factor);
+        return estimate ? *estimate : std::numeric_limits<double>::quiet_NaN();
+      },
+      py::arg("at_spacing"), py::arg("at_coarse"), py::arg("factor") = 2.0,
+      "tau extrapolated to zero voxel size from tau at h and at factor * h (first order, Richardson); with tau(h) "
+      "it brackets the converged value where tau falls with a shrinking slope. NaN unless both are finite.");
   module.def("fit_bruggeman_exponent", &microstructure::fit_bruggeman_exponent, py::arg("porosity"),
              py::arg("tortuosity"), "alpha of D_eff/D = porosity^alpha (tau = porosity^(1 - alpha)); NaN if none.");
 }

@@ -69,4 +69,11 @@ def test_analyse_writes_the_files_and_the_cli_draws_them(tmp_path, cli):
     assert abs(solid.mean() - (1 - summary["porosity_voxels"])) < 1e-12
     from_file = ms.read_summary(tmp_path / "cli")  # analysis.txt, a TOML document
     assert from_file["tortuosity_z"] == summary["tortuosity_z"]
+    # The resolution check: tau at 2h, and the first-order extrapolation of the two to h = 0.
+    for axis in "xyz":
+        tau, coarse = summary[f"tortuosity_{axis}"], summary[f"tortuosity_{axis}_coarse"]
+        assert summary[f"tortuosity_{axis}_extrapolated"] == ms.extrapolated_tortuosity(tau, coarse, 2.0)
+        assert abs(ms.extrapolated_tortuosity(tau, coarse) - (2 * tau - coarse)) < 1e-12
+    assert math.isnan(ms.extrapolated_tortuosity(math.inf, 2.0))
+    assert 0 < summary["pore_radius_median_um_coarse"] < summary["pore_radius_largest_um_coarse"]
     assert from_file["grid"] == [30, 30, 30]
