@@ -134,8 +134,8 @@ def tortuosity_porosity_figure(states, title=None, axes=None):
 
     ``states``: a list of ``(label, summary)`` where ``summary`` is :func:`read_summary` of an
     analysis folder (porosity_voxels, tortuosity_z, tortuosity_z_coarse, tortuosity_z_extrapolated,
-    voxel sizes). The value at the coarser resolution is drawn hollow, the extrapolation to zero
-    voxel size as a star. Returns the Figure.
+    voxel sizes). The value at the coarser resolution is drawn hollow, the first-order extrapolation
+    of the two to zero voxel size as a triangle (the lower end of their bracket). Returns the Figure.
     """
     import matplotlib.pyplot as plt
     import numpy as np
@@ -161,8 +161,8 @@ def tortuosity_porosity_figure(states, title=None, axes=None):
                       label=f"{label}: {summary['coarse_voxel_size_um']:.3g} um voxels")
         estimate = summary.get("tortuosity_z_extrapolated")
         if isinstance(estimate, float) and math.isfinite(estimate):
-            axes.plot(summary["porosity_voxels"], estimate, "*", color=colours(index), ms=9,
-                      label=f"{label}: extrapolated to 0 um voxels")
+            axes.plot(summary["porosity_voxels"], estimate, "v", color=colours(index), ms=7,
+                      label=f"{label}: first-order extrapolation to 0 um voxels")
     axes.set_xlabel("porosity eps")
     axes.set_ylabel("through-plane tortuosity factor tau_z")
     axes.grid(alpha=0.3)
