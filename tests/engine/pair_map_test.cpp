@@ -109,6 +109,24 @@ TEST(EnginePairMap, ThreadedHistoryMergeEqualsOneMerge) {
   }
 }
 
+// Every pair whose bounding spheres come closer than their radii plus `skin` under the minimum
+// image in x and y, by testing all pairs; keys sorted.
+std::vector<PairKey> brute_force_keys(const ParticleSet& particles, const Box& box, double skin) {
+  std::vector<PairKey> keys;
+  const auto image = [](double d, double length) { return d - length * std::round(d / length); };
+  for (std::size_t a = 0; a < particles.size(); ++a)
+    for (std::size_t b = a + 1; b < particles.size(); ++b) {
+      const Eigen::Vector3d raw = particles.position[b] - particles.position[a];
+      const Eigen::Vector3d d(image(raw.x(), box.lx), image(raw.y(), box.ly), raw.z());
+      const double reach = particles.bounding_radius[a] + particles.bounding_radius[b] + skin;
+      if (d.squaredNorm() < reach * reach)
+        keys.push_back(
+            pair_key(std::min(particles.id[a], particles.id[b]), std::max(particles.id[a], particles.id[b])));
+    }
+  std::sort(keys.begin(), keys.end());
+  return keys;
+}
+
 // The cell list finds exactly the pairs a brute-force search over all pairs (minimum image in x
 // and y) finds, sorted by key as the history merge needs, and the same list for any thread count.
 // Ids are shuffled against the slots so that key order and slot order differ.
@@ -126,35 +144,25 @@ TEST(EnginePairMap, CellListEqualsBruteForceSortedByKey) {
     particles.add(id, axes, 1.0, centre, random.rotation());
   }
   const double skin = 0.3;
+  const std::vector<PairKey> expected = brute_force_keys(particles, box, skin);
+  ASSERT_GT(expected.size(), 100U);
   const auto serial = find_candidate_pairs(particles, box, skin, 1);
+  ASSERT_EQ(serial.size(), expected.size());
+  for (std::size_t k = 0; k < expected.size(); ++k) {
+    EXPECT_EQ(serial[k].key, expected[k]);
+    EXPECT_LT(particles.id[serial[k].i], particles.id[serial[k].j]);  // i is the smaller id
+    const Eigen::Vector3d seen = particles.position[serial[k].j] + serial[k].shift - particles.position[serial[k].i];
+    EXPECT_LE(std::abs(seen.x()), 0.5 * box.lx);  // the shift gives the nearest image
+    EXPECT_LE(std::abs(seen.y()), 0.5 * box.ly);
+  }
   for (const int threads : {2, 3, 7}) {  // as many id ranges as threads, of uneven sizes for 3 and 7
-    SCOPED_TRACE(threads);
     const auto threaded = find_candidate_pairs(particles, box, skin, threads);
-    std::vector<PairKey> expected;
-    const auto image = [](double d, double length) { return d - length * std::round(d / length); };
-    for (std::size_t a = 0; a < particles.size(); ++a)
-      for (std::size_t b = a + 1; b < particles.size(); ++b) {
-        const Eigen::Vector3d raw = particles.position[b] - particles.position[a];
-        const Eigen::Vector3d d(image(raw.x(), box.lx), image(raw.y(), box.ly), raw.z());
-        const double reach = particles.bounding_radius[a] + particles.bounding_radius[b] + skin;
-        if (d.squaredNorm() < reach * reach)
-          expected.push_back(
-              pair_key(std::min(particles.id[a], particles.id[b]), std::max(particles.id[a], particles.id[b])));
-      }
-    std::sort(expected.begin(), expected.end());
-    ASSERT_GT(expected.size(), 100U);
-    ASSERT_EQ(serial.size(), expected.size());
-    ASSERT_EQ(threaded.size(), expected.size());
-    for (std::size_t k = 0; k < expected.size(); ++k) {
-      EXPECT_EQ(serial[k].key, expected[k]);
-      EXPECT_EQ(threaded[k].key, expected[k]);
-      EXPECT_EQ(threaded[k].i, serial[k].i);
-      EXPECT_EQ(threaded[k].j, serial[k].j);
-      EXPECT_EQ(threaded[k].shift, serial[k].shift);
-      EXPECT_LT(particles.id[serial[k].i], particles.id[serial[k].j]);  // i is the smaller id
-      const Eigen::Vector3d seen = particles.position[serial[k].j] + serial[k].shift - particles.position[serial[k].i];
-      EXPECT_LE(std::abs(seen.x()), 0.5 * box.lx);  // the shift gives the nearest image
-      EXPECT_LE(std::abs(seen.y()), 0.5 * box.ly);
+    ASSERT_EQ(threaded.size(), serial.size()) << threads;
+    for (std::size_t k = 0; k < serial.size(); ++k) {
+      EXPECT_EQ(threaded[k].key, serial[k].key) << threads;
+      EXPECT_EQ(threaded[k].i, serial[k].i) << threads;
+      EXPECT_EQ(threaded[k].j, serial[k].j) << threads;
+      EXPECT_EQ(threaded[k].shift, serial[k].shift) << threads;
     }
   }
 }
@@ -183,16 +191,7 @@ TEST(EnginePairMap, TinyParticlesInAHugeBoxNeedMemoryForTheParticlesOnly) {
   add({20.0, 0.5 * radius, 3.0});
   const double skin = 0.1 * radius;
   const auto pairs = find_candidate_pairs(particles, box, skin, 2);
-  std::vector<PairKey> expected;
-  const auto image = [](double d, double length) { return d - length * std::round(d / length); };
-  for (std::size_t a = 0; a < particles.size(); ++a)
-    for (std::size_t b = a + 1; b < particles.size(); ++b) {
-      const Eigen::Vector3d raw = particles.position[b] - particles.position[a];
-      const Eigen::Vector3d d(image(raw.x(), box.lx), image(raw.y(), box.ly), raw.z());
-      const double reach = 2.0 * radius + skin;
-      if (d.squaredNorm() < reach * reach) expected.push_back(pair_key(particles.id[a], particles.id[b]));
-    }
-  std::sort(expected.begin(), expected.end());
+  const std::vector<PairKey> expected = brute_force_keys(particles, box, skin);
   ASSERT_EQ(expected.size(), 200U * 2U + 2U);  // two pairs per chain, one per boundary
   ASSERT_EQ(pairs.size(), expected.size());
   for (std::size_t k = 0; k < expected.size(); ++k) EXPECT_EQ(pairs[k].key, expected[k]);
