@@ -10,11 +10,13 @@
 #include <limits>
 #include <numbers>
 #include <random>
+#include <string>
 
 #ifdef _OPENMP
 #include <omp.h>
 #endif
 
+#include "ellc/microstructure/analysis.hpp"
 #include "ellc/microstructure/tortuosity.hpp"
 #include "microstructure/microstructure_support.hpp"
 
@@ -156,6 +158,41 @@ TEST(Tortuosity, ExtrapolationToZeroVoxelSizeBeatsTheFinerGrid) {
     EXPECT_LT(std::abs(*estimate - exact), 0.25 * std::abs(tau_fine - exact)) << fine;
     EXPECT_LT(std::abs(*estimate / exact - 1.0), 0.005) << fine;
   }
+}
+
+// Where the line cannot be trusted the analysis says why instead of giving a number: a coarse
+// grid under 2.5 voxels per smallest semi-axis, or a line that ends below τ = 1 (D_eff ≤ ε D_bulk).
+// The full calendering example at 0.8/1.6 µm (1.0 voxel per smallest semi-axis on the coarse
+// grid) gave τ_z = 2.72 and 4.90, whose line ends at 0.54.
+TEST(Tortuosity, ExtrapolationIsGivenOnlyWhereItCanBeTrusted) {
+  EXPECT_EQ(extrapolate_tortuosity(1.8, 2.1, 2.0, 2.5).tortuosity, 1.5);
+  EXPECT_EQ(extrapolate_tortuosity(1.8, 2.1, 2.0, 5.0 / 2.0 * (1.0 - 1e-15)).tortuosity, 1.5)
+      << "the default 5 voxels per semi-axis, halved, in floating point";
+  const TortuosityExtrapolation coarse = extrapolate_tortuosity(1.8, 2.1, 2.0, 2.4);
+  EXPECT_FALSE(coarse.tortuosity.has_value());
+  EXPECT_NE(coarse.reason.find("2.4 voxels per smallest semi-axis"), std::string::npos) << coarse.reason;
+  const TortuosityExtrapolation below_one = extrapolate_tortuosity(2.7215, 4.9019, 2.0, 3.0);
+  EXPECT_FALSE(below_one.tortuosity.has_value());
+  EXPECT_NE(below_one.reason.find("< 1"), std::string::npos) << below_one.reason;
+  EXPECT_FALSE(extrapolate_tortuosity(std::numeric_limits<double>::infinity(), 3.0, 2.0, 5.0).tortuosity);
+  EXPECT_FALSE(extrapolate_tortuosity(2.7215, 4.9019, 2.0, 1.04).tortuosity);
+
+  // Through the whole analysis: the sphere array at 12 voxels per radius (6 on the coarse grid)
+  // reports the line, 2 τ(h) − τ(2h) on each axis; at 4 voxels per radius (2 coarse) the note.
+  const double radius = std::cbrt(3.0 * 0.2 / (4.0 * std::numbers::pi));
+  const Packing packing = test::one_sphere(radius, {0.5, 0.5, 0.5}, 1.0);
+  AnalysisOptions options;
+  options.resolution.voxels_per_semi_axis = 12.0;
+  const AnalysisReport fine = analyse(packing, options);
+  for (std::size_t axis = 0; axis < 3; ++axis) {
+    ASSERT_TRUE(fine.tortuosity_extrapolated[axis].tortuosity.has_value()) << fine.tortuosity_extrapolated[axis].reason;
+    EXPECT_DOUBLE_EQ(*fine.tortuosity_extrapolated[axis].tortuosity,
+                     2.0 * fine.tortuosity[axis]->tortuosity - fine.tortuosity_coarse[axis]->tortuosity);
+  }
+  options.resolution.voxels_per_semi_axis = 4.0;
+  const AnalysisReport coarse_report = analyse(packing, options);
+  EXPECT_FALSE(coarse_report.tortuosity_extrapolated[2].tortuosity.has_value());
+  EXPECT_NE(coarse_report.tortuosity_extrapolated[2].reason.find("voxels per smallest semi-axis"), std::string::npos);
 }
 
 TEST(Tortuosity, SameBitsOnOneThreadAsOnTwo) {

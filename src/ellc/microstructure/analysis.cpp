@@ -75,7 +75,8 @@ AnalysisReport analyse(const Packing& packing, const AnalysisOptions& options, c
       if (const auto& fine = report.tortuosity[axis]) {  // the axes asked for
         const DiffusionResult at_coarse = tortuosity_factor(coarse, static_cast<int>(axis), options.diffusion);
         report.tortuosity_extrapolated[axis] =
-            extrapolated_tortuosity(fine->tortuosity, at_coarse.tortuosity, options.coarse_factor);
+            extrapolate_tortuosity(fine->tortuosity, at_coarse.tortuosity, options.coarse_factor,
+                                   packing.smallest_semi_axis() / report.coarse_spacing);
         report.tortuosity_coarse[axis] = at_coarse;
       }
   }
@@ -109,9 +110,13 @@ void write_analysis_summary(std::ostream& out, const AnalysisReport& report) {
       out << "pore_radius_median_um_coarse = " << toml_float(psd->median_radius)
           << "\npore_radius_largest_um_coarse = " << toml_float(psd->largest_radius) << '\n';
     for (const auto& result : report.tortuosity_coarse) write(result, "_coarse");
-    for (std::size_t axis = 0; axis < 3; ++axis)
-      if (const auto& estimate = report.tortuosity_extrapolated[axis])
-        out << "tortuosity_" << kAxes[axis] << "_extrapolated = " << toml_float(*estimate) << '\n';
+    for (std::size_t axis = 0; axis < 3; ++axis) {
+      const TortuosityExtrapolation& line = report.tortuosity_extrapolated[axis];
+      if (line.tortuosity)
+        out << "tortuosity_" << kAxes[axis] << "_extrapolated = " << toml_float(*line.tortuosity) << '\n';
+      else if (report.tortuosity_coarse[axis] && !line.reason.empty())
+        out << "tortuosity_" << kAxes[axis] << "_extrapolated_note = " << toml_string(line.reason) << '\n';
+    }
   }
 }
 

@@ -41,7 +41,7 @@ struct AnalysisReport {
   std::array<std::optional<DiffusionResult>, 3> tortuosity;         // at the spacing
   std::array<std::optional<DiffusionResult>, 3> tortuosity_coarse;  // at coarse_factor × the spacing
   std::optional<PoreSizeDistribution> pore_sizes_coarse;            // at coarse_factor × the spacing
-  std::array<std::optional<double>, 3> tortuosity_extrapolated;     // to zero voxel size (Richardson)
+  std::array<TortuosityExtrapolation, 3> tortuosity_extrapolated;   // to zero voxel size, or why not
   double coarse_spacing = 0.0;
   std::array<int, 3> coarse_shape{0, 0, 0};
 };

@@ -4,6 +4,9 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <string>
+
+#include "ellc/io/input_error.hpp"
 
 namespace ellc::microstructure {
 
@@ -268,6 +271,25 @@ std::optional<double> extrapolated_tortuosity(double at_spacing, double at_coars
         std::isfinite(factor) && factor > 1.0))
     return std::nullopt;
   return at_spacing + (at_spacing - at_coarse) / (factor - 1.0);
+}
+
+TortuosityExtrapolation extrapolate_tortuosity(double at_spacing, double at_coarse, double factor,
+                                               double coarse_voxels_per_semi_axis) {
+  TortuosityExtrapolation result;
+  const auto estimate = extrapolated_tortuosity(at_spacing, at_coarse, factor);
+  if (!estimate) {
+    result.reason = "no finite tortuosity at both voxel sizes";
+  } else if (!(coarse_voxels_per_semi_axis >= kMinCoarseVoxelsPerSemiAxis * (1.0 - 1e-9))) {
+    result.reason = "not extrapolated: the coarse grid has " + format_number(coarse_voxels_per_semi_axis) +
+                    " voxels per smallest semi-axis, under " + format_number(kMinCoarseVoxelsPerSemiAxis) +
+                    " (a finer voxel size, e.g. the default 5 voxels per semi-axis, gives one)";
+  } else if (*estimate < 1.0) {
+    result.reason = "not extrapolated: the line through the two values reaches " + format_number(*estimate) +
+                    " < 1 at zero voxel size (tau >= 1 always): outside the first-order range";
+  } else {
+    result.tortuosity = estimate;
+  }
+  return result;
 }
 
 double fit_bruggeman_exponent(const std::vector<double>& porosity, const std::vector<double>& tortuosity) {
