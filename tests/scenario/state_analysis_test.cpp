@@ -11,6 +11,7 @@
 
 #include <toml++/toml.h>
 
+#include "ellc/microstructure/tortuosity.hpp"
 #include "ellc/scenario/run_outputs.hpp"
 #include "ellc/scenario/state_analysis.hpp"
 
@@ -61,6 +62,27 @@ TEST(StatesSummary, FiniteTortuositiesGiveAFiniteExponent) {
   EXPECT_TRUE(table["analysis_bruggeman_exponent"].is_floating_point());
   EXPECT_TRUE(std::isfinite(table["analysis_bruggeman_exponent"].value<double>().value_or(NAN)));
   EXPECT_FALSE(table.contains("analysis_loaded_tortuosity_z_note"));
+}
+
+// Where every state has its line to zero voxel size, the exponent is fitted on the lines too: each
+// τ lies between its line and τ(h), so α lies between the two exponents; a state without a line
+// (a coarse grid under 2.5 voxels per semi-axis) leaves the second exponent out.
+TEST(StatesSummary, ExtrapolatedTortuositiesGiveTheExponentsBracket) {
+  auto loaded = state("loaded", 0.3465, 2.082, "");
+  auto released = state("released", 0.3763, 1.969, "");
+  loaded.report.tortuosity_extrapolated[2].tortuosity = 1.656;
+  released.report.tortuosity_extrapolated[2].tortuosity = 1.594;
+  const toml::table table = parsed(scenario::states_summary({loaded, released}));
+  const double at_h = table["analysis_bruggeman_exponent"].value<double>().value_or(NAN);
+  const double on_lines = table["analysis_bruggeman_exponent_extrapolated"].value<double>().value_or(NAN);
+  EXPECT_DOUBLE_EQ(on_lines, microstructure::fit_bruggeman_exponent({0.3465, 0.3763}, {1.656, 1.594}));
+  EXPECT_LT(on_lines, at_h);
+  EXPECT_DOUBLE_EQ(table["analysis_loaded_tortuosity_z_extrapolated"].value<double>().value_or(NAN), 1.656);
+  released.report.tortuosity_extrapolated[2] = {std::nullopt, "not extrapolated: the coarse grid has 1 voxel"};
+  const toml::table partial = parsed(scenario::states_summary({loaded, released}));
+  EXPECT_FALSE(partial.contains("analysis_bruggeman_exponent_extrapolated"));
+  EXPECT_EQ(partial["analysis_released_tortuosity_z_extrapolated_note"].value<std::string>(),
+            "not extrapolated: the coarse grid has 1 voxel");
 }
 
 // Real numbers round-trip bit for bit and stay floats when they look like integers (a plate at

@@ -1,6 +1,7 @@
 #include "ellc/scenario/state_analysis.hpp"
 
 #include <cmath>
+#include <limits>
 #include <sstream>
 #include <string>
 
@@ -75,6 +76,8 @@ std::string states_summary(const std::vector<StateAnalysis>& states) {
   std::ostringstream out;
   std::vector<double> porosity;
   std::vector<double> tortuosity;
+  std::vector<double> tortuosity_extrapolated;  // the same states' lines to zero voxel size
+  bool every_state_extrapolated = true;
   for (const StateAnalysis& state : states) {
     const auto& report = state.report;
     out << "analysis_" << state.state << "_porosity = " << toml_float(report.porosity_voxels) << '\n';
@@ -84,6 +87,9 @@ std::string states_summary(const std::vector<StateAnalysis>& states) {
         out << "analysis_" << state.state << "_tortuosity_z_note = " << toml_string(tau->reason) << '\n';
       porosity.push_back(report.porosity_voxels);
       tortuosity.push_back(tau->tortuosity);
+      const auto& line = report.tortuosity_extrapolated[2].tortuosity;
+      every_state_extrapolated = every_state_extrapolated && line.has_value();
+      tortuosity_extrapolated.push_back(line.value_or(std::numeric_limits<double>::quiet_NaN()));
     }
     const std::string at_coarse =
         "  # at " + format_number(report.coarse_spacing) + " um voxels (" + format_number(report.spacing) + " above)\n";
@@ -107,6 +113,14 @@ std::string states_summary(const std::vector<StateAnalysis>& states) {
         << "  # D_eff/D = porosity^alpha over the states above (Bruggeman: 1.5)\n";
   else
     out << "analysis_bruggeman_exponent = nan  # no state with a finite tortuosity and 0 < porosity < 1\n";
+  // The same fit on the lines: each state's τ lies between its line and τ(h), so α between the two
+  // exponents (α grows with τ at a fixed ε < 1).
+  if (every_state_extrapolated && !porosity.empty()) {
+    const double alpha_lines = microstructure::fit_bruggeman_exponent(porosity, tortuosity_extrapolated);
+    if (std::isfinite(alpha_lines))
+      out << "analysis_bruggeman_exponent_extrapolated = " << toml_float(alpha_lines)
+          << "  # the same fit on the extrapolated tortuosities: with the line above, the exponent's bracket\n";
+  }
   return out.str();
 }
 
