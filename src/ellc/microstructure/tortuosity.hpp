@@ -62,7 +62,7 @@ struct DiffusionResult {
 // that resolve the particles: the coarse one at least kMinCoarseVoxelsPerSemiAxis voxels per
 // smallest semi-axis (the default 5 per semi-axis with factor 2 gives exactly that; measured:
 // at 2.5 the quick calendering example's estimate lands 1.3 % from the converged τ, at 1.0–1.2
-// the line falls 20 % to 80 % short of it, to τ < 1 for the full example). And τ ≥ 1 always
+// the line falls 15 % to 70 % short of it, to τ < 1 for the full example). And τ ≥ 1 always
 // (D_eff ≤ ε D_bulk), so a line that ends below 1 is outside the first-order range.
 inline constexpr double kMinCoarseVoxelsPerSemiAxis = 2.5;
 struct TortuosityExtrapolation {
