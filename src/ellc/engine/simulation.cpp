@@ -140,6 +140,28 @@ void Simulation::index_pairs_by_particle() {
     const std::uint32_t end = pairs_of_particle_start_[slot + 1];
     if (begin < end) pair_span_[slot] = {pairs_of_particle_[begin] >> 1U, pairs_of_particle_[end - 1] >> 1U};
   }
+  // The wall owners' lists (compute_forces_threaded): the slots with pairs bucketed by their first
+  // pair (a counting sort over pair indices; it reads pair_span_ only, not the large pair slots).
+  std::vector<std::uint32_t> position(pairs_.size() + 1, 0);
+  slots_without_pairs_.clear();
+  for (std::size_t slot = 0; slot < count; ++slot) {
+    if (pair_span_[slot].first <= pair_span_[slot].last)
+      ++position[pair_span_[slot].first + 1];
+    else
+      slots_without_pairs_.push_back(static_cast<std::uint32_t>(slot));
+  }
+  for (std::size_t index = 0; index < pairs_.size(); ++index) position[index + 1] += position[index];
+  slots_by_first_pair_.resize(count - slots_without_pairs_.size());
+  first_pair_of_listed_.resize(slots_by_first_pair_.size());
+  for (std::size_t slot = 0; slot < count; ++slot) {
+    const PairSpan span = pair_span_[slot];
+    if (span.first > span.last) continue;
+    const std::uint32_t at = position[span.first]++;
+    slots_by_first_pair_[at] = static_cast<std::uint32_t>(slot);
+    first_pair_of_listed_[at] = span.first;
+  }
+  ELLC_ASSERT(slots_by_first_pair_.size() + slots_without_pairs_.size() == count,
+              "every particle is listed once for its walls");
   ELLC_ASSERT(invariants::valid_pair_index(pairs_, count, pairs_of_particle_start_, pairs_of_particle_),
               "per-particle pair index inconsistent with the pair list");
 }

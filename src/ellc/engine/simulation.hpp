@@ -208,7 +208,7 @@ class Simulation {
   };
   std::size_t compute_forces(SecondKick kick);
   std::size_t compute_forces_threaded(SecondKick kick);
-  [[nodiscard]] std::size_t owner_of_particle(std::size_t slot) const noexcept;
+  void evaluate_walls_of_range(std::size_t range);
   [[nodiscard]] bool kick_and_check_particle(std::size_t slot, double half_dt) noexcept;
   [[nodiscard]] std::uint64_t evaluate_pairs_in_order();
   // add_to_i / add_to_j: add the pair's force and torque to that particle right away (the thread
@@ -283,6 +283,13 @@ class Simulation {
   std::vector<std::uint32_t> pairs_of_particle_start_;
   std::vector<std::uint32_t> pairs_of_particle_;
   std::vector<PairSpan> pair_span_;  // per particle, from the same index
+  // Which thread evaluates a particle's walls in the threaded loop: the owner of the range that
+  // holds its first pair (a particle without pairs: by slot). Listed once per rebuild so that each
+  // thread finds its particles by two binary searches instead of scanning all of them: the slots
+  // with pairs in order of their first pair (and those first pairs), the slots without in order.
+  std::vector<std::uint32_t> slots_by_first_pair_;
+  std::vector<std::uint32_t> first_pair_of_listed_;
+  std::vector<std::uint32_t> slots_without_pairs_;
   std::vector<ChunkSums> chunk_sums_;
   // The threaded pair loop's contiguous ranges: their first pairs this step, and their cuts,
   // balanced on the time each range took. Not state: only the speed depends on it.

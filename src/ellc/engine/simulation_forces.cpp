@@ -64,9 +64,11 @@ std::uint64_t Simulation::evaluate_pairs_in_order() {
 }
 
 int Simulation::range_of_pair(std::size_t index) const noexcept {
-  int range = 0;
-  while (range + 1 < partition_.ranges() && index >= range_start_[static_cast<std::size_t>(range) + 1]) ++range;
-  return range;
+  // The cuts range_start_[1 … ranges − 1] at or before `index` (a binary search: called per
+  // particle after the loop, so a linear scan would cost every thread O(particles) on many cores).
+  const auto cuts_begin = range_start_.begin() + 1;
+  const auto cuts_end = range_start_.begin() + partition_.ranges();
+  return static_cast<int>(std::upper_bound(cuts_begin, cuts_end, index) - cuts_begin);
 }
 
 // Threads (docs/engine.md, "The threaded pair loop"). Each thread owns one contiguous range of the
@@ -120,8 +122,7 @@ std::size_t Simulation::compute_forces_threaded(SecondKick kick) {
     } else {
       const auto own = static_cast<std::size_t>(omp_get_thread_num());
       const auto start = std::chrono::steady_clock::now();
-      for (std::size_t slot = 0; slot < count; ++slot)
-        if (owner_of_particle(slot) == own) evaluate_walls_and_reset(slot);
+      evaluate_walls_of_range(own);
       const std::size_t lo = range_start_[own];
       const std::size_t hi = range_start_[own + 1];
       // The chunks that lie in this range alone (others' owners write the rest).
@@ -187,12 +188,27 @@ std::size_t Simulation::compute_forces_threaded(SecondKick kick) {
   return kick.apply ? first_bad : count;
 }
 
-// The thread that evaluates particle `slot`'s walls in the threaded loop: the owner of the range of
-// its first pair, or for a particle without pairs one by slot.
-std::size_t Simulation::owner_of_particle(std::size_t slot) const noexcept {
-  const PairSpan span = pair_span_[slot];
-  if (span.first <= span.last) return static_cast<std::size_t>(range_of_pair(span.first));
-  return slot * static_cast<std::size_t>(partition_.ranges()) / particles_.size();
+// The walls of the particles whose first pair lies in range `range`, and of the particles without
+// pairs whose slot s has s × ranges / particles = range. Each particle's walls are per-slot state,
+// so the order does not matter; the owner must only be the same thread that adds the particle's
+// pair forces in its range.
+void Simulation::evaluate_walls_of_range(std::size_t range) {
+  const auto listed = [&](std::size_t k) {
+    return static_cast<std::size_t>(std::lower_bound(first_pair_of_listed_.begin(), first_pair_of_listed_.end(),
+                                                     static_cast<std::uint32_t>(range_start_[k])) -
+                                    first_pair_of_listed_.begin());
+  };
+  const std::size_t last_range = static_cast<std::size_t>(partition_.ranges()) - 1;
+  const std::size_t begin = range == 0 ? 0 : listed(range);
+  const std::size_t end = range == last_range ? slots_by_first_pair_.size() : listed(range + 1);
+  for (std::size_t k = begin; k < end; ++k) evaluate_walls_and_reset(slots_by_first_pair_[k]);
+  // Without pairs: slot × ranges / count = range exactly for slots in [⌈range count / ranges⌉, …).
+  const std::size_t count = particles_.size();
+  const auto ranges = static_cast<std::size_t>(partition_.ranges());
+  const auto first_slot = [&](std::size_t k) { return (k * count + ranges - 1) / ranges; };
+  const auto from = std::lower_bound(slots_without_pairs_.begin(), slots_without_pairs_.end(), first_slot(range));
+  const auto to = std::lower_bound(from, slots_without_pairs_.end(), first_slot(range + 1));
+  for (auto slot = from; slot != to; ++slot) evaluate_walls_and_reset(*slot);
 }
 
 // Takes the next block of range `range` from its front (its owner) or its back (another thread);
