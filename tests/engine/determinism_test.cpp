@@ -159,6 +159,10 @@ TEST(EngineDeterminism, ThreadRangesAndTakenPairsGiveTheSameState) {
   uneven.threads = 3;
   uneven.fixed_pair_cuts = {0.5, 0.51};  // one nearly empty range
   EXPECT_TRUE(run_colliding(uneven).state == reference.state) << "an almost empty range changed the state";
+  CollidingRun empty = one;
+  empty.threads = 4;
+  empty.fixed_pair_cuts = {0.3, 0.3, 0.7};  // an empty range: its thread owns no pair and no first pair
+  EXPECT_TRUE(run_colliding(empty).state == reference.state) << "an empty range changed the state";
 }
 
 // A parallel region may get fewer threads than it asks for (nested in another region, or under
