@@ -33,6 +33,7 @@
 
 #include "analyse_command.hpp"
 #include "command_registry.hpp"
+#include "ellc/engine/cpu_load.hpp"
 #include "ellc/io/input_error.hpp"
 #include "ellc/scenario/ensemble.hpp"
 #include "ellc/scenario/run_plan.hpp"
@@ -506,6 +507,13 @@ void run_dem(const DemOptions& options) {
     throw InputError("", "--threads", std::to_string(options.threads),
                      "1, or no --threads, with --jobs " + std::to_string(jobs) +
                          ": members that run side by side use one engine thread each");
+  // Members side by side beyond a CPU quota only share it (docs/engine.md, "Threads"): said, not
+  // changed, since the user chose the count.
+  if (const auto quota = engine::process_cpu_quota(); quota && jobs > engine::threads_within_quota(jobs, quota))
+    std::fprintf(stderr,
+                 "ellc: warning: --jobs %d under a CPU quota of %s core(s): the members share it, each running "
+                 "slower; --jobs %d would take about as long with less memory\n",
+                 jobs, format_number(*quota).c_str(), engine::threads_within_quota(jobs, quota));
   run_members(options, loaded, seeds, jobs);
 }
 
