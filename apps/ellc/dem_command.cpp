@@ -509,11 +509,12 @@ void run_dem(const DemOptions& options) {
                          ": members that run side by side use one engine thread each");
   // Members side by side beyond a CPU quota only share it (docs/engine.md, "Threads"): said, not
   // changed, since the user chose the count.
-  if (const auto quota = engine::process_cpu_quota(); quota && jobs > engine::threads_within_quota(jobs, quota))
+  const auto quota = engine::process_cpu_quota();
+  if (const int within = engine::threads_within_quota(jobs, quota); within < jobs)
     std::fprintf(stderr,
                  "ellc: warning: --jobs %d under a CPU quota of %s core(s): the members share it, each running "
                  "slower; --jobs %d would take about as long with less memory\n",
-                 jobs, format_number(*quota).c_str(), engine::threads_within_quota(jobs, quota));
+                 jobs, format_number(quota.value_or(0.0)).c_str(), within);
   run_members(options, loaded, seeds, jobs);
 }
 

@@ -37,24 +37,18 @@ double steady_seconds() noexcept {
   return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
 }
 
-// The first whitespace-separated token of `text`.
-std::string_view first_token(std::string_view text) noexcept {
-  const std::size_t begin = text.find_first_not_of(" \t\n");
-  if (begin == std::string_view::npos) return {};
-  const std::size_t end = text.find_first_of(" \t\n", begin);
-  return text.substr(begin, end == std::string_view::npos ? std::string_view::npos : end - begin);
-}
-
-std::optional<long long> whole_number(std::string_view token) noexcept {
-  long long value = 0;
-  const auto [end, error] = std::from_chars(token.data(), token.data() + token.size(), value);
-  if (error != std::errc{} || end != token.data() + token.size() || token.empty()) return std::nullopt;
+// next_number() for a field that must end there (at whitespace or the end): "15x000" is no number.
+std::optional<unsigned long long> whole_field(std::string_view text, std::size_t& at) noexcept {
+  const auto value = next_number(text, at);
+  if (!value || (at < text.size() && text[at] != ' ' && text[at] != '\t' && text[at] != '\n')) return std::nullopt;
   return value;
 }
 
-// quota / period in cores; nullopt unless both are positive.
-std::optional<double> quota_over_period(std::optional<long long> quota, std::optional<long long> period) noexcept {
-  if (!quota || !period || *quota <= 0 || *period <= 0) return std::nullopt;
+// quota / period in cores; nullopt unless both are positive (cgroup v1's −1 and v2's "max" are
+// no number here, so no quota).
+std::optional<double> quota_over_period(std::optional<unsigned long long> quota,
+                                        std::optional<unsigned long long> period) noexcept {
+  if (!quota || !period || *quota == 0 || *period == 0) return std::nullopt;
   return static_cast<double>(*quota) / static_cast<double>(*period);
 }
 
@@ -71,14 +65,16 @@ std::optional<std::string> file_text(const std::string& path) noexcept {
 }  // namespace
 
 std::optional<double> quota_cores_v2(std::string_view cpu_max) noexcept {
-  const std::string_view quota = first_token(cpu_max);
-  if (quota.empty() || quota == "max") return std::nullopt;
-  const std::string_view rest = cpu_max.substr(static_cast<std::size_t>(quota.data() + quota.size() - cpu_max.data()));
-  return quota_over_period(whole_number(quota), whole_number(first_token(rest)));
+  std::size_t at = 0;
+  const auto quota = whole_field(cpu_max, at);  // evaluated in this order: quota, then period
+  const auto period = quota ? whole_field(cpu_max, at) : std::nullopt;
+  return quota_over_period(quota, period);
 }
 
 std::optional<double> quota_cores_v1(std::string_view quota_us, std::string_view period_us) noexcept {
-  return quota_over_period(whole_number(first_token(quota_us)), whole_number(first_token(period_us)));
+  std::size_t quota_at = 0;
+  std::size_t period_at = 0;
+  return quota_over_period(whole_field(quota_us, quota_at), whole_field(period_us, period_at));
 }
 
 std::optional<double> cpu_quota_cores(std::string_view membership, const std::string& mount) noexcept {

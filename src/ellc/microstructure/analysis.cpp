@@ -71,12 +71,12 @@ AnalysisReport analyse(const Packing& packing, const AnalysisOptions& options, c
     report.coarse_spacing = report.spacing * options.coarse_factor;
     report.coarse_shape = coarse.shape;
     report.pore_sizes_coarse = continuous_pore_size_distribution(coarse, options.pore_size_radii);
+    const double coarse_voxels_per_semi_axis = packing.smallest_semi_axis() / report.coarse_spacing;
     for (std::size_t axis = 0; axis < 3; ++axis)
       if (const auto& fine = report.tortuosity[axis]) {  // the axes asked for
         const DiffusionResult at_coarse = tortuosity_factor(coarse, static_cast<int>(axis), options.diffusion);
-        report.tortuosity_extrapolated[axis] =
-            extrapolate_tortuosity(fine->tortuosity, at_coarse.tortuosity, options.coarse_factor,
-                                   packing.smallest_semi_axis() / report.coarse_spacing);
+        report.tortuosity_extrapolated[axis] = extrapolate_tortuosity(
+            fine->tortuosity, at_coarse.tortuosity, options.coarse_factor, coarse_voxels_per_semi_axis);
         report.tortuosity_coarse[axis] = at_coarse;
       }
   }
@@ -114,7 +114,7 @@ void write_analysis_summary(std::ostream& out, const AnalysisReport& report) {
       const TortuosityExtrapolation& line = report.tortuosity_extrapolated[axis];
       if (line.tortuosity)
         out << "tortuosity_" << kAxes[axis] << "_extrapolated = " << toml_float(*line.tortuosity) << '\n';
-      else if (report.tortuosity_coarse[axis] && !line.reason.empty())
+      else if (!line.reason.empty())  // empty where no line was attempted (an axis not asked for)
         out << "tortuosity_" << kAxes[axis] << "_extrapolated_note = " << toml_string(line.reason) << '\n';
     }
   }

@@ -98,7 +98,7 @@ std::string states_summary(const std::vector<StateAnalysis>& states) {
     if (const auto& estimate = report.tortuosity_extrapolated[2].tortuosity)
       out << "analysis_" << state.state << "_tortuosity_z_extrapolated = " << toml_float(*estimate)
           << "  # to zero voxel size from the two above (first order)\n";
-    else if (report.tortuosity_coarse[2] && !report.tortuosity_extrapolated[2].reason.empty())
+    else if (!report.tortuosity_extrapolated[2].reason.empty())
       out << "analysis_" << state.state
           << "_tortuosity_z_extrapolated_note = " << toml_string(report.tortuosity_extrapolated[2].reason) << '\n';
     out << "analysis_" << state.state << "_pore_radius_median_um = " << toml_float(report.pore_sizes.median_radius)
